@@ -1,0 +1,10 @@
+#![no_std]
+#![forbid(unsafe_code)]
+#![doc = "mcsample (crate docs are written with the modules)."]
+
+#[cfg(feature = "std")]
+extern crate std;
+
+pub mod lane;
+pub mod math;
+pub mod x8;

@@ -1,0 +1,80 @@
+//! The public packet types: eight lanes of f32 in structure-of-arrays form.
+//!
+//! `Vec2x8` and `Vec3x8` are the packet instances of the crate's generic vectors, so their lanes
+//! are public fields (`v.x` is an [`F32x8`] holding eight x components).
+
+use glam::{Vec2, Vec3};
+
+use crate::lane::{V2, V3};
+
+/// Eight f32 lanes (`wide::f32x8`). Masks are `F32x8` values with all bits set or clear.
+pub type F32x8 = wide::f32x8;
+/// Eight u32 lanes (`wide::u32x8`).
+pub type U32x8 = wide::u32x8;
+/// Eight 2D vectors, one per lane.
+pub type Vec2x8 = V2<F32x8>;
+/// Eight 3D vectors, one per lane.
+pub type Vec3x8 = V3<F32x8>;
+
+impl Vec2x8 {
+    /// Every lane equal to `v`.
+    #[inline(always)]
+    pub fn splat(v: Vec2) -> Self {
+        Self::new(F32x8::splat(v.x), F32x8::splat(v.y))
+    }
+    /// The eight lanes as glam vectors.
+    #[inline]
+    pub fn to_array(self) -> [Vec2; 8] {
+        let (x, y) = (self.x.to_array(), self.y.to_array());
+        core::array::from_fn(|i| Vec2::new(x[i], y[i]))
+    }
+    /// Lane `i` as a glam vector. Panics if `i >= 8`.
+    #[inline]
+    pub fn lane(self, i: usize) -> Vec2 {
+        Vec2::new(self.x.to_array()[i], self.y.to_array()[i])
+    }
+}
+
+impl From<[Vec2; 8]> for Vec2x8 {
+    #[inline]
+    fn from(a: [Vec2; 8]) -> Self {
+        Self::new(
+            F32x8::new(a.map(|v| v.x)),
+            F32x8::new(a.map(|v| v.y)),
+        )
+    }
+}
+
+impl Vec3x8 {
+    /// Every lane equal to `v`.
+    #[inline(always)]
+    pub fn splat(v: Vec3) -> Self {
+        Self::new(F32x8::splat(v.x), F32x8::splat(v.y), F32x8::splat(v.z))
+    }
+    /// The eight lanes as glam vectors.
+    #[inline]
+    pub fn to_array(self) -> [Vec3; 8] {
+        let (x, y, z) = (self.x.to_array(), self.y.to_array(), self.z.to_array());
+        core::array::from_fn(|i| Vec3::new(x[i], y[i], z[i]))
+    }
+    /// Lane `i` as a glam vector. Panics if `i >= 8`.
+    #[inline]
+    pub fn lane(self, i: usize) -> Vec3 {
+        Vec3::new(
+            self.x.to_array()[i],
+            self.y.to_array()[i],
+            self.z.to_array()[i],
+        )
+    }
+}
+
+impl From<[Vec3; 8]> for Vec3x8 {
+    #[inline]
+    fn from(a: [Vec3; 8]) -> Self {
+        Self::new(
+            F32x8::new(a.map(|v| v.x)),
+            F32x8::new(a.map(|v| v.y)),
+            F32x8::new(a.map(|v| v.z)),
+        )
+    }
+}

@@ -5,6 +5,8 @@
 #[cfg(feature = "std")]
 extern crate std;
 
+pub mod frame;
 pub mod lane;
 pub mod math;
+pub mod warp;
 pub mod x8;

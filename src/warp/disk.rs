@@ -1,0 +1,73 @@
+//! Square → unit disk: Shirley–Chiu's concentric map and the polar map. Both are area-preserving
+//! up to a constant, so the area pdf is 1/π.
+
+use crate::lane::{Lane, V2};
+use crate::warp::common::{azimuth_fraction, clamp_u};
+
+/// The concentric map, also returning the signed radius it builds the point from.
+///
+/// Mapping: a = 2u₀ − 1, b = 2u₁ − 1. The larger of |a|, |b| is the radius r; the ratio of the
+/// other to it, t ∈ [−1, 1], is the angle in units of π/4 within that quadrant's wedge. One
+/// division and selects replace the four-way branch. The radius comes back because the cosine
+/// hemisphere needs it exactly: z = √((1−r)(1+r)) does not cancel near the rim, whereas
+/// √(1 − x² − y²) does.
+#[inline(always)]
+pub(crate) fn concentric_with_radius<L: Lane>(u: V2<L>) -> (V2<L>, L) {
+    let u = clamp_u(u);
+    let a = u.x.mul_add(L::c(2.0), L::c(-1.0));
+    let b = u.y.mul_add(L::c(2.0), L::c(-1.0));
+    let a_major = a.abs().gt(b.abs());
+    let r = L::select(a_major, a, b);
+    let other = L::select(a_major, b, a);
+    // At the centre r = 0: t = 0 keeps the result at the origin instead of 0/0.
+    let t = L::select(r.eq(L::c(0.0)), L::c(0.0), other / r);
+    let (s, c) = t.sincos_pi4();
+    // Wedge |a| > |b|: φ = (π/4)t. Otherwise φ = π/2 − (π/4)t, which swaps sin and cos.
+    let p = V2::new(r * L::select(a_major, c, s), r * L::select(a_major, s, c));
+    (p, r.abs())
+}
+
+#[inline(always)]
+pub fn concentric_disk<L: Lane>(u: V2<L>) -> V2<L> {
+    concentric_with_radius(u).0
+}
+
+/// Inverse of the concentric map. The larger |coordinate| selects the wedge; atan of the ratio of
+/// the smaller to it gives t. p = 0 maps to (½, ½).
+#[inline(always)]
+pub fn concentric_disk_inverse<L: Lane>(p: V2<L>) -> V2<L> {
+    let x_major = p.x.abs().ge(p.y.abs());
+    let major = L::select(x_major, p.x, p.y);
+    let minor = L::select(x_major, p.y, p.x);
+    let r = p.length_squared().sqrt().copysign(major);
+    // atan(minor/major) with |minor| ≤ |major|, written as atan2 so that major = 0 is harmless.
+    let phi = (minor * L::c(1.0).copysign(major)).atan2(major.abs());
+    let t = phi * L::c(4.0 / core::f64::consts::PI);
+    let a = L::select(x_major, r, r * t);
+    let b = L::select(x_major, r * t, r);
+    V2::new(
+        a.mul_add(L::c(0.5), L::c(0.5)),
+        b.mul_add(L::c(0.5), L::c(0.5)),
+    )
+}
+
+/// The polar map: r = √u₀, φ = 2πu₁.
+#[inline(always)]
+pub fn polar_disk<L: Lane>(u: V2<L>) -> V2<L> {
+    let u = clamp_u(u);
+    let r = u.x.sqrt();
+    let (s, c) = u.y.sincos_2pi();
+    V2::new(r * c, r * s)
+}
+
+/// Inverse of the polar map: u₀ = |p|², u₁ = azimuth/2π in [0, 1).
+#[inline(always)]
+pub fn polar_disk_inverse<L: Lane>(p: V2<L>) -> V2<L> {
+    V2::new(p.length_squared(), azimuth_fraction(p.x, p.y))
+}
+
+/// Area pdf of a uniform point in the unit disk: 1/π.
+#[inline(always)]
+pub fn uniform_disk_pdf<L: Lane>() -> L {
+    L::c(core::f64::consts::FRAC_1_PI)
+}

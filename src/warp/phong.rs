@@ -1,0 +1,49 @@
+//! Square → Phong lobe cosⁿα about +z, pdf (n+1)/(2π)·cosⁿα per steradian.
+
+use crate::lane::{Lane, V2, V3};
+use crate::warp::common::{azimuth_fraction, clamp_u, sin_from_one_minus_cos};
+use crate::warp::cone::one_minus_z;
+
+/// Exponents are clamped to [0, N_MAX]. A lobe sharper than this is a mirror: route it with a
+/// specular flag, not through a pdf of 10¹⁹.
+pub const PHONG_N_MAX: f32 = 1.0e20;
+
+#[inline(always)]
+fn clamp_n<L: Lane>(n: L) -> L {
+    n.clamp(L::c(0.0), L::c(PHONG_N_MAX as f64))
+}
+
+/// t = 1 − cos α = −expm1(ln(u₀)/(n+1)), sin α = √(t(2 − t)), φ = 2πu₁.
+///
+/// The naive cos α = u₀^{1/(n+1)} rounds to 1 for most u₀ when n is large (157 distinct directions
+/// from 1e5 samples at n = 1e6); expm1 keeps t, and with it sin α, to full relative precision.
+#[inline(always)]
+pub fn phong_lobe<L: Lane>(u: V2<L>, n: L) -> V3<L> {
+    let u = clamp_u(u);
+    let n = clamp_n(n);
+    let t = -(u.x.ln() / (n + L::c(1.0))).exp_m1();
+    let sin_a = sin_from_one_minus_cos(t);
+    let (s, c) = u.y.sincos_2pi();
+    V3::new(sin_a * c, sin_a * s, L::c(1.0) - t)
+}
+
+/// (n+1)/(2π)·exp(n·ln cos α) for cos α > 0, else 0 (the horizon is outside the support, which
+/// makes n = 0 agree with the open hemisphere). NaN gives 0.
+#[inline(always)]
+pub fn phong_lobe_pdf<L: Lane>(cos_alpha: L, n: L) -> L {
+    let n = clamp_n(n);
+    let norm = (n + L::c(1.0)) * L::c(0.5 * core::f64::consts::FRAC_1_PI);
+    let p = norm * (n * cos_alpha.ln()).exp();
+    L::select(cos_alpha.gt(L::c(0.0)) & n.eq(n), p, L::c(0.0))
+}
+
+/// Inverse: u₀ = cos^{n+1}α = exp((n+1)·ln(1 − t)) with t = 1 − cos α taken from x² + y², so
+/// directions near the axis keep their precision.
+#[inline(always)]
+pub fn phong_lobe_inverse<L: Lane>(w: V3<L>, n: L) -> V2<L> {
+    let n = clamp_n(n);
+    let t = one_minus_z(w);
+    let u0 = ((n + L::c(1.0)) * (-t).ln_1p()).exp();
+    let u0 = L::select(w.z.gt(L::c(0.0)), u0.min(L::c(1.0)), L::c(0.0));
+    V2::new(u0, azimuth_fraction(w.x, w.y))
+}

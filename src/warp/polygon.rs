@@ -1,0 +1,39 @@
+//! What the spherical triangle and rectangle share: Van Oosterom–Strackee solid angles and the
+//! area-to-solid-angle pdf of a planar light.
+
+use crate::lane::{Lane, V3};
+
+/// Solid angle of the triangle with vertices `a`, `b`, `c` seen from the origin, by
+/// Van Oosterom–Strackee: tan(Ω/2) = |a·(b×c)| / (|a||b||c| + (a·b)|c| + (a·c)|b| + (b·c)|a|).
+///
+/// The caller supplies the triple product, computed from edge vectors where it can
+/// (a·((b−a)×(c−a)) keeps its relative precision for a tiny, distant triangle where a·(b×c)
+/// cancels), and the three lengths. Result in [0, 2π].
+#[inline(always)]
+pub(crate) fn vos_solid_angle<L: Lane>(
+    triple: L,
+    a: V3<L>,
+    b: V3<L>,
+    c: V3<L>,
+    la: L,
+    lb: L,
+    lc: L,
+) -> L {
+    let den = (la * lb).mul_add(lc, a.dot(b).mul_add(lc, a.dot(c).mul_add(lb, b.dot(c) * la)));
+    L::c(2.0) * triple.abs().atan2(den)
+}
+
+/// pdf per steradian of direction `w` (unit) when points are drawn uniformly by area on a planar
+/// light through `p0` with normal `n` (unnormalised, |n| = area·`area_per_n`):
+/// d²/(|cos θ_l|·area) = (p0·n)²/|w·n|³ · (1/area_per_n)… written as k(p0·n)²/|w·n|³.
+///
+/// A light seen edge-on (p0·n = 0) or a direction parallel to it (w·n = 0) gives 0: the sample is
+/// dropped rather than weighted by an infinite pdf.
+#[inline(always)]
+pub(crate) fn area_pdf_solid_angle<L: Lane>(w: V3<L>, p0: V3<L>, n: V3<L>, k: L) -> L {
+    let h = p0.dot(n);
+    let c = w.dot(n).abs();
+    let p = k * (h * h) / (c * c * c);
+    let ok = h.abs().gt(L::c(0.0)) & c.gt(L::c(0.0)) & p.is_finite();
+    L::select(ok, p, L::c(0.0))
+}

@@ -1,0 +1,221 @@
+//! Uniform sampling of the solid angle of a rectangle (Ureña, Fajardo, King 2013), with an exact
+//! area fallback where spherical sampling is unstable.
+//!
+//! The rectangle is `corner + s·ex + t·ey`, s, t ∈ [0, 1], relative to the shading point; `ex`
+//! and `ey` must be orthogonal. The algorithm works in the rectangle's frame (x̂ along ex, ŷ along
+//! ey, ẑ towards the shading point's side flipped so that z₀ ≤ 0).
+
+use crate::lane::{Lane, V2, V3};
+use crate::warp::common::clamp_u;
+use crate::warp::polygon::{area_pdf_solid_angle, vos_solid_angle};
+
+/// Below this solid angle (sr) the rectangle is sampled by area.
+pub const SPHERICAL_RECTANGLE_MIN_SR: f32 = 1.0e-3;
+
+const TAU: f64 = core::f64::consts::TAU;
+
+struct Setup<L: Lane> {
+    corner: V3<L>,
+    ex: V3<L>,
+    ey: V3<L>,
+    /// Unit axes of the rectangle's frame.
+    xh: V3<L>,
+    yh: V3<L>,
+    x0: L,
+    y0: L,
+    z0: L,
+    x1: L,
+    y1: L,
+    /// Ureña's b₀, b₁ (z components of two edge-plane normals) and k = 2π − γ₂ − γ₃.
+    b0: L,
+    b1: L,
+    k: L,
+    /// Σγ − 2π: the solid angle as the sampler's own map sees it.
+    s_map: L,
+    /// The solid angle by Van Oosterom–Strackee, used for the pdf.
+    omega: L,
+    valid: L::Mask,
+    by_area: L::Mask,
+}
+
+/// Solid angle of the local rectangle [x0, x1] × [y0, y1] at height z0, as two VOS triangles.
+/// Their triple products are exactly z0·(x1−x0)·(y1−y0), so no cancellation enters.
+#[inline(always)]
+fn rect_solid_angle<L: Lane>(x0: L, x1: L, y0: L, y1: L, z0: L) -> L {
+    let v00 = V3::new(x0, y0, z0);
+    let v10 = V3::new(x1, y0, z0);
+    let v11 = V3::new(x1, y1, z0);
+    let v01 = V3::new(x0, y1, z0);
+    let (l00, l10, l11, l01) = (v00.length(), v10.length(), v11.length(), v01.length());
+    let triple = z0 * (x1 - x0) * (y1 - y0);
+    vos_solid_angle(triple, v00, v10, v11, l00, l10, l11)
+        + vos_solid_angle(triple, v00, v11, v01, l00, l11, l01)
+}
+
+#[inline(always)]
+fn setup<L: Lane>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
+    let exl = ex.length();
+    let eyl = ey.length();
+    let xh = ex.scale(L::c(1.0) / exl);
+    let yh = ey.scale(L::c(1.0) / eyl);
+    let zh = xh.cross(yh);
+    let x0 = corner.dot(xh);
+    let y0 = corner.dot(yh);
+    let z0 = -corner.dot(zh).abs();
+    let x1 = x0 + exl;
+    let y1 = y0 + eyl;
+
+    // Interior angles between consecutive edge planes, as atan2(|n_i × n_j|, −n_i·n_j) with the
+    // common positive factors cancelled: accurate where acos(−n_i·n_j) is not.
+    let az = z0.abs();
+    let len = |x: L, y: L| x.mul_add(x, y.mul_add(y, z0 * z0)).sqrt();
+    let g0 = (az * len(x1, y0)).atan2(y0 * x1);
+    let g1 = (az * len(x1, y1)).atan2(-(x1 * y1));
+    let g2 = (az * len(x0, y1)).atan2(x0 * y1);
+    let g3 = (az * len(x0, y0)).atan2(-(x0 * y0));
+    let b0 = -y0 / z0.mul_add(z0, y0 * y0).sqrt();
+    let b1 = y1 / z0.mul_add(z0, y1 * y1).sqrt();
+    let k = L::c(TAU) - g2 - g3;
+    let s_map = g0 + g1 - k;
+    let omega = rect_solid_angle(x0, x1, y0, y1, z0);
+
+    let valid = omega.gt(L::c(0.0))
+        & omega.is_finite()
+        & exl.gt(L::c(0.0))
+        & eyl.gt(L::c(0.0))
+        & (x0 + y0 + z0).is_finite();
+    let by_area = omega.lt(L::c(SPHERICAL_RECTANGLE_MIN_SR as f64)) | !s_map.gt(L::c(0.0));
+    Setup {
+        corner,
+        ex,
+        ey,
+        xh,
+        yh,
+        x0,
+        y0,
+        z0,
+        x1,
+        y1,
+        b0,
+        b1,
+        k,
+        s_map,
+        omega,
+        valid,
+        by_area,
+    }
+}
+
+/// h = y/√(d² + y²): the sine of the elevation of (·, y) seen at distance d from the y-axis line.
+#[inline(always)]
+fn elevation<L: Lane>(y: L, d: L) -> L {
+    y / d.mul_add(d, y * y).sqrt()
+}
+
+/// Ureña's map: u₀ picks x by inverting the solid angle of the slab [x0, x], u₁ the height y
+/// uniformly in the slab's solid angle. Returns local (x, y).
+#[inline(always)]
+fn urena<L: Lane>(s: &Setup<L>, u: V2<L>) -> (L, L) {
+    let au = u.x.mul_add(s.s_map, s.k);
+    let (sa, ca) = au.sin_cos();
+    let fu = ca.mul_add(s.b0, -s.b1) / sa;
+    let cu = (L::c(1.0).copysign(fu) / fu.mul_add(fu, s.b0 * s.b0).sqrt())
+        .clamp(L::c(-1.0), L::c(1.0));
+    let sin_u = ((L::c(1.0) - cu) * (L::c(1.0) + cu)).max(L::c(0.0)).sqrt();
+    let xu = (-(cu * s.z0) / sin_u).clamp(s.x0, s.x1);
+    let d = xu.mul_add(xu, s.z0 * s.z0).sqrt();
+    let h0 = elevation(s.y0, d);
+    let h1 = elevation(s.y1, d);
+    let hv = u.y.mul_add(h1 - h0, h0);
+    let hv2 = hv * hv;
+    let yv = L::select(
+        hv2.lt(L::c(1.0 - 1e-6)),
+        (hv * d) / (L::c(1.0) - hv2).sqrt(),
+        s.y1,
+    );
+    (xu, yv.clamp(s.y0, s.y1))
+}
+
+#[inline(always)]
+fn pdf_of<L: Lane>(s: &Setup<L>, w: V3<L>) -> L {
+    let n = s.ex.cross(s.ey);
+    L::select(
+        s.by_area,
+        area_pdf_solid_angle(w, s.corner, n, L::c(1.0)),
+        L::c(1.0) / s.omega,
+    )
+}
+
+/// A point on the rectangle and its pdf per steradian. See the public face for the contract.
+#[inline(always)]
+pub fn spherical_rectangle<L: Lane>(
+    u: V2<L>,
+    corner: V3<L>,
+    ex: V3<L>,
+    ey: V3<L>,
+) -> (V3<L>, L) {
+    let u = clamp_u(u);
+    let s = setup(corner, ex, ey);
+    let (xu, yv) = urena(&s, u);
+    // Offsets from the corner keep the point on the plane even when the rectangle is far away.
+    let fx = L::select(s.by_area, u.x, (xu - s.x0) / (s.x1 - s.x0));
+    let fy = L::select(s.by_area, u.y, (yv - s.y0) / (s.y1 - s.y0));
+    let p = corner + ex.scale(fx) + ey.scale(fy);
+    let pdf = pdf_of(&s, p.normalize());
+    let ok = s.valid & p.dot(p).is_finite();
+    let p = V3::select(ok, p, corner);
+    (p, L::select(ok, pdf, L::c(0.0)))
+}
+
+/// The rectangle's local (s, t) ∈ [0,1]² hit by unit direction `w`, and whether it is hit in front.
+#[inline(always)]
+fn hit<L: Lane>(s: &Setup<L>, w: V3<L>) -> (V2<L>, L::Mask) {
+    let n = s.ex.cross(s.ey);
+    let t = s.corner.dot(n) / w.dot(n);
+    let d = w.scale(t) - s.corner;
+    let st = V2::new(d.dot(s.ex) / s.ex.dot(s.ex), d.dot(s.ey) / s.ey.dot(s.ey));
+    (st, t.gt(L::c(0.0)))
+}
+
+/// pdf per steradian that [`spherical_rectangle`] returns a point in direction `w` (unit); 0 when
+/// `w` misses the rectangle.
+#[inline(always)]
+pub fn spherical_rectangle_pdf<L: Lane>(
+    w: V3<L>,
+    corner: V3<L>,
+    ex: V3<L>,
+    ey: V3<L>,
+) -> L {
+    let s = setup(corner, ex, ey);
+    let (st, front) = hit(&s, w);
+    let inside = front
+        & st.x.ge(L::c(0.0))
+        & st.x.le(L::c(1.0))
+        & st.y.ge(L::c(0.0))
+        & st.y.le(L::c(1.0));
+    L::select(s.valid & inside, pdf_of(&s, w), L::c(0.0))
+}
+
+/// The u that [`spherical_rectangle`] maps to point `p` of the rectangle.
+///
+/// Spherically: u₀ is the solid angle of the slab [x0, x] over the whole, u₁ the fraction of the
+/// elevation sine h between the slab's bottom and top edges. By area: p's (s, t).
+#[inline(always)]
+pub fn spherical_rectangle_inverse<L: Lane>(
+    p: V3<L>,
+    corner: V3<L>,
+    ex: V3<L>,
+    ey: V3<L>,
+) -> V2<L> {
+    let s = setup(corner, ex, ey);
+    let d = p - corner;
+    let st = V2::new(d.dot(s.ex) / s.ex.dot(s.ex), d.dot(s.ey) / s.ey.dot(s.ey));
+    let x = d.dot(s.xh) + s.x0;
+    let y = d.dot(s.yh) + s.y0;
+    let u0 = rect_solid_angle(s.x0, x, s.y0, s.y1, s.z0) / s.omega;
+    let dist = x.mul_add(x, s.z0 * s.z0).sqrt();
+    let h0 = elevation(s.y0, dist);
+    let h1 = elevation(s.y1, dist);
+    let u1 = (elevation(y, dist) - h0) / (h1 - h0);
+    clamp_u(V2::select(s.by_area, st, V2::new(u0, u1)))
+}

@@ -1,0 +1,215 @@
+//! Uniform sampling of the solid angle of a triangle (Arvo 1995), with an exact area fallback
+//! where spherical sampling is unstable.
+//!
+//! Vertices are given relative to the shading point, in any winding. The solid angle Ω comes from
+//! Van Oosterom–Strackee on edge vectors, and the same Ω serves the sample and the pdf.
+
+use crate::lane::{Lane, V2, V3};
+use crate::warp::common::clamp_u;
+use crate::warp::polygon::{area_pdf_solid_angle, vos_solid_angle};
+use crate::warp::triangle::{uniform_triangle, uniform_triangle_inverse};
+
+/// Below this solid angle (sr) the triangle is sampled by area. Measured: see
+/// `examples/report.rs` (spherical-triangle stability table) and the module docs of `warp`.
+pub const SPHERICAL_TRIANGLE_MIN_SR: f32 = 1.0e-3;
+/// Above this solid angle (sr), close to a hemisphere, the triangle is sampled by area too.
+pub const SPHERICAL_TRIANGLE_MAX_SR: f32 = 6.0;
+
+/// Everything the sampler, pdf and inverse need, computed once per triangle.
+struct Setup<L: Lane> {
+    a: V3<L>,
+    /// Unit vertex directions.
+    ua: V3<L>,
+    ub: V3<L>,
+    uc: V3<L>,
+    /// Plane normal (b−a)×(c−a), unnormalised.
+    n: V3<L>,
+    omega: L,
+    /// α, the interior angle at A, with its sine and cosine.
+    alpha: L,
+    sin_alpha: L,
+    cos_alpha: L,
+    /// cos of the arc AB.
+    cos_c: L,
+    /// True where the triangle can be sampled at all.
+    valid: L::Mask,
+    /// True where it is sampled by area.
+    by_area: L::Mask,
+}
+
+#[inline(always)]
+fn setup<L: Lane>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
+    let (la, lb, lc) = (a.length(), b.length(), c.length());
+    let (ua, ub, uc) = (a.scale(L::c(1.0) / la), b.scale(L::c(1.0) / lb), c.scale(L::c(1.0) / lc));
+    let e1 = b - a;
+    let e2 = c - a;
+    let n = e1.cross(e2);
+    // Scale-free triple product: a·(e1×e2)/(|a||b||c|), from edges so it keeps its precision.
+    let triple = ua.dot(n) / (lb * lc);
+    let omega = vos_solid_angle(triple, ua, ub, uc, L::c(1.0), L::c(1.0), L::c(1.0));
+
+    // α from the normals of the planes through (A, B) and (A, C), as atan2(|n₁×n₂|, n₁·n₂),
+    // which is accurate at every angle (acos is not, near 0 and π).
+    let nab = ua.cross(ub);
+    let nac = ua.cross(uc);
+    let nab = nab.scale(L::c(1.0) / nab.length());
+    let nac = nac.scale(L::c(1.0) / nac.length());
+    let cos_alpha = nab.dot(nac).clamp(L::c(-1.0), L::c(1.0));
+    let sin_alpha = nab.cross(nac).length();
+    let alpha = sin_alpha.atan2(cos_alpha);
+    let cos_c = ua.dot(ub);
+
+    let valid = omega.gt(L::c(0.0))
+        & omega.is_finite()
+        & alpha.is_finite()
+        & n.dot(n).is_finite()
+        & la.gt(L::c(0.0))
+        & lb.gt(L::c(0.0))
+        & lc.gt(L::c(0.0));
+    let by_area = omega.lt(L::c(SPHERICAL_TRIANGLE_MIN_SR as f64))
+        | omega.gt(L::c(SPHERICAL_TRIANGLE_MAX_SR as f64))
+        | !alpha.is_finite()
+        | sin_alpha.eq(L::c(0.0));
+    Setup {
+        a,
+        ua,
+        ub,
+        uc,
+        n,
+        omega,
+        alpha,
+        sin_alpha,
+        cos_alpha,
+        cos_c,
+        valid,
+        by_area,
+    }
+}
+
+/// The component of `v` orthogonal to unit `u`, normalised.
+#[inline(always)]
+fn ortho<L: Lane>(v: V3<L>, u: V3<L>) -> V3<L> {
+    let w = v - u.scale(v.dot(u));
+    w.scale(L::c(1.0) / w.length())
+}
+
+/// Arvo's map: u₀ picks the sub-triangle A B Ĉ of area u₀Ω, u₁ the point along the arc B Ĉ.
+#[inline(always)]
+fn arvo<L: Lane>(s: &Setup<L>, u: V2<L>) -> V3<L> {
+    let area = u.x * s.omega;
+    let (sp, cp) = (area - s.alpha).sin_cos();
+    let uu = cp - s.cos_alpha;
+    let vv = s.sin_alpha.mul_add(s.cos_c, sp);
+    let num = (vv * cp - uu * sp).mul_add(s.cos_alpha, -vv);
+    let den = (vv * sp + uu * cp) * s.sin_alpha;
+    let q = (num / den).clamp(L::c(-1.0), L::c(1.0));
+    let sin_q = ((L::c(1.0) - q) * (L::c(1.0) + q)).max(L::c(0.0)).sqrt();
+    let c_hat = s.ua.scale(q) + ortho(s.uc, s.ua).scale(sin_q);
+    // 1 − Ĉ·B as |Ĉ − B|²/2, so that z keeps its precision when Ĉ is close to B.
+    let d = c_hat - s.ub;
+    let one_minus_z = u.y * (L::c(0.5) * d.dot(d));
+    let z = L::c(1.0) - one_minus_z;
+    let sin_z = (one_minus_z * (L::c(2.0) - one_minus_z)).max(L::c(0.0)).sqrt();
+    s.ub.scale(z) + ortho(c_hat, s.ub).scale(sin_z)
+}
+
+/// The point of the plane hit by unit direction `w`, as barycentrics (b₀, b₁, b₂), and whether
+/// the hit lies in front of the origin.
+#[inline(always)]
+fn barycentrics<L: Lane>(w: V3<L>, a: V3<L>, b: V3<L>, c: V3<L>, n: V3<L>) -> (V3<L>, L::Mask) {
+    let wn = w.dot(n);
+    let t = a.dot(n) / wn;
+    let d = w.scale(t) - a;
+    let nn = n.dot(n);
+    let b1 = d.cross(c - a).dot(n) / nn;
+    let b2 = (b - a).cross(d).dot(n) / nn;
+    (V3::new(L::c(1.0) - b1 - b2, b1, b2), t.gt(L::c(0.0)))
+}
+
+/// Direction towards (a, b, c) and its pdf per steradian. See the public face for the contract.
+#[inline(always)]
+pub fn spherical_triangle<L: Lane>(
+    u: V2<L>,
+    a: V3<L>,
+    b: V3<L>,
+    c: V3<L>,
+) -> (V3<L>, L) {
+    let u = clamp_u(u);
+    let s = setup(a, b, c);
+    let w_sph = arvo(&s, u);
+    let bary = uniform_triangle(u);
+    let p = a.scale(bary.x) + b.scale(bary.y) + c.scale(bary.z);
+    let w_area = p.normalize();
+    let w = V3::select(s.by_area, w_area, w_sph);
+    let pdf = pdf_of(&s, w);
+    let ok = s.valid & w.dot(w).is_finite();
+    let w = V3::select(ok, w, V3::new(L::c(0.0), L::c(0.0), L::c(1.0)));
+    (w, L::select(ok, pdf, L::c(0.0)))
+}
+
+/// The pdf of direction `w` given a set-up triangle, without the inside test: 1/Ω when sampled
+/// spherically, the converted area pdf otherwise.
+#[inline(always)]
+fn pdf_of<L: Lane>(s: &Setup<L>, w: V3<L>) -> L {
+    let sph = L::c(1.0) / s.omega;
+    let area = area_pdf_solid_angle(w, s.a, s.n, L::c(2.0));
+    L::select(s.by_area, area, sph)
+}
+
+/// pdf per steradian that [`spherical_triangle`] returns `w` (unit): 0 outside the triangle.
+#[inline(always)]
+pub fn spherical_triangle_pdf<L: Lane>(w: V3<L>, a: V3<L>, b: V3<L>, c: V3<L>) -> L {
+    let s = setup(a, b, c);
+    let (bary, front) = barycentrics(w, a, b, c, s.n);
+    let inside = front
+        & bary.x.ge(L::c(0.0))
+        & bary.y.ge(L::c(0.0))
+        & bary.z.ge(L::c(0.0));
+    L::select(s.valid & inside, pdf_of(&s, w), L::c(0.0))
+}
+
+/// The u that [`spherical_triangle`] maps to direction `w`.
+///
+/// Spherically: Ĉ is where the great circle through B and w meets the arc AC; u₁ is the fraction
+/// of the arc B Ĉ covered, |w − B|²/|Ĉ − B|², and u₀ the area of A B Ĉ over Ω. By area: the
+/// low-distortion triangle inverse of w's barycentrics.
+#[inline(always)]
+pub fn spherical_triangle_inverse<L: Lane>(
+    w: V3<L>,
+    a: V3<L>,
+    b: V3<L>,
+    c: V3<L>,
+) -> V2<L> {
+    let s = setup(a, b, c);
+    let (bary, _) = barycentrics(w, a, b, c, s.n);
+    let u_area = uniform_triangle_inverse(bary);
+
+    let plane_bw = s.ub.cross(w);
+    let plane_ac = s.ua.cross(s.uc);
+    let c_hat = plane_bw.cross(plane_ac);
+    let c_hat = c_hat.scale(L::c(1.0) / c_hat.length());
+    // The two planes meet in ±Ĉ: keep the one on the arc from A to C.
+    let c_hat = c_hat.scale(L::c(1.0).copysign(c_hat.dot(s.ua + s.uc)));
+    let dw = w - s.ub;
+    let dc = c_hat - s.ub;
+    let u1 = dw.dot(dw) / dc.dot(dc);
+    let e1 = s.ub - s.ua;
+    let e2 = c_hat - s.ua;
+    let sub = vos_solid_angle(
+        s.ua.dot(e1.cross(e2)),
+        s.ua,
+        s.ub,
+        c_hat,
+        L::c(1.0),
+        L::c(1.0),
+        L::c(1.0),
+    );
+    let u0 = sub / s.omega;
+    // w = B leaves Ĉ undefined; any u₀ with u₁ = 0 maps there.
+    let at_b = dw.dot(dw).eq(L::c(0.0));
+    let u_sph = V2::new(
+        L::select(at_b, L::c(0.0), u0),
+        L::select(at_b, L::c(0.0), u1),
+    );
+    clamp_u(V2::select(s.by_area, u_area, u_sph))
+}

@@ -22,12 +22,12 @@ pub(crate) fn basis<L: Lane>(n: V3<L>) -> (V3<L>, V3<L>) {
     let b = n.x * n.y * a;
     let t = V3::new((s * n.x * n.x).mul_add(a, L::c(1.0)), s * b, -(s * n.x));
     let bt = V3::new(b, (n.y * n.y).mul_add(a, s), -n.y);
-    (t, bt)
+    (t.canon(), bt.canon())
 }
 
 #[inline(always)]
 fn to_local<L: Lane>(t: V3<L>, b: V3<L>, n: V3<L>, v: V3<L>) -> V3<L> {
-    V3::new(v.dot(t), v.dot(b), v.dot(n))
+    V3::new(v.dot(t), v.dot(b), v.dot(n)).canon()
 }
 
 #[inline(always)]
@@ -37,6 +37,7 @@ fn to_world<L: Lane>(t: V3<L>, b: V3<L>, n: V3<L>, v: V3<L>) -> V3<L> {
         t.y.mul_add(v.x, b.y.mul_add(v.y, n.y * v.z)),
         t.z.mul_add(v.x, b.z.mul_add(v.y, n.z * v.z)),
     )
+    .canon()
 }
 
 /// A right-handed orthonormal frame (`t`, `b`, `n`): local +z is `n`.
@@ -52,7 +53,11 @@ impl Frame {
     #[inline]
     pub fn from_normal(n: Vec3) -> Self {
         let (t, b) = basis::<f32>(n.into());
-        Self { t: t.into(), b: b.into(), n }
+        Self {
+            t: t.into(),
+            b: b.into(),
+            n,
+        }
     }
     /// World → local: (v·t, v·b, v·n).
     #[inline]
@@ -83,7 +88,7 @@ pub mod x8 {
         #[inline]
         pub fn from_normal(n: Vec3x8) -> Self {
             let (t, b) = basis(n);
-            Self { t, b, n }
+            Self { t, b, n: n.canon() }
         }
         /// World → local, lane by lane.
         #[inline]

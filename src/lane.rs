@@ -114,6 +114,15 @@ pub trait Lane:
     fn is_nan(self) -> Self::Mask {
         !self.eq(self)
     }
+    /// NaN replaced by the canonical quiet NaN (bits 0x7fc0_0000 in f32); other values unchanged.
+    ///
+    /// Which NaN an IEEE operation returns depends on operand order, which the compiler may
+    /// commute differently in scalar and packet code. Warps canonicalise what they return, so
+    /// NaN outputs are bit-identical in both widths.
+    #[inline(always)]
+    fn canon(self) -> Self {
+        Self::select(self.is_nan(), Self::c(f64::NAN), self)
+    }
     /// True where the lane is neither NaN nor infinite.
     #[inline(always)]
     fn is_finite(self) -> Self::Mask {
@@ -162,7 +171,9 @@ pub trait Lane32: Lane {
 fn fma_f32(a: f32, b: f32, c: f32) -> f32 {
     // wide fuses f32x4 and f32x8 under the same condition, so lane 0 of an f32x4 is the scalar
     // twin of a packet FMA (one vfmadd…ss with FMA, a multiply and an add without).
-    wide::f32x4::splat(a).mul_add(wide::f32x4::splat(b), wide::f32x4::splat(c)).to_array()[0]
+    wide::f32x4::splat(a)
+        .mul_add(wide::f32x4::splat(b), wide::f32x4::splat(c))
+        .to_array()[0]
 }
 
 impl Lane for f32 {
@@ -519,6 +530,11 @@ impl<L: Lane> V2<L> {
     pub fn select(m: L::Mask, a: Self, b: Self) -> Self {
         Self::new(L::select(m, a.x, b.x), L::select(m, a.y, b.y))
     }
+    /// Every NaN component replaced by the canonical NaN ([`Lane::canon`]).
+    #[inline(always)]
+    pub fn canon(self) -> Self {
+        Self::new(self.x.canon(), self.y.canon())
+    }
 }
 
 impl<L: Lane> V3<L> {
@@ -570,6 +586,11 @@ impl<L: Lane> V3<L> {
             L::select(m, a.y, b.y),
             L::select(m, a.z, b.z),
         )
+    }
+    /// Every NaN component replaced by the canonical NaN ([`Lane::canon`]).
+    #[inline(always)]
+    pub fn canon(self) -> Self {
+        Self::new(self.x.canon(), self.y.canon(), self.z.canon())
     }
 }
 

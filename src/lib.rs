@@ -10,3 +10,6 @@ pub mod lane;
 pub mod math;
 pub mod warp;
 pub mod x8;
+
+#[cfg(feature = "std")]
+pub mod verify;

@@ -38,10 +38,7 @@ impl Vec2x8 {
 impl From<[Vec2; 8]> for Vec2x8 {
     #[inline]
     fn from(a: [Vec2; 8]) -> Self {
-        Self::new(
-            F32x8::new(a.map(|v| v.x)),
-            F32x8::new(a.map(|v| v.y)),
-        )
+        Self::new(F32x8::new(a.map(|v| v.x)), F32x8::new(a.map(|v| v.y)))
     }
 }
 

@@ -12,7 +12,7 @@ const H_MAX: f64 = 2.0;
 /// h = 1 − cos θmax, clamped to [0, 2].
 #[inline(always)]
 pub fn cone_h_from_cos<L: Lane>(cos_max: L) -> L {
-    (L::c(1.0) - cos_max).clamp(L::c(0.0), L::c(H_MAX))
+    (L::c(1.0) - cos_max).clamp(L::c(0.0), L::c(H_MAX)).canon()
 }
 
 /// h from sin²θmax (θmax ≤ π/2), as s²/(1 + √(1 − s²)): exact algebra, no cancellation and no
@@ -20,7 +20,7 @@ pub fn cone_h_from_cos<L: Lane>(cos_max: L) -> L {
 #[inline(always)]
 pub fn cone_h_from_sin2<L: Lane>(sin2_max: L) -> L {
     let s2 = sin2_max.clamp(L::c(0.0), L::c(1.0));
-    s2 / (L::c(1.0) + (L::c(1.0) - s2).sqrt())
+    (s2 / (L::c(1.0) + (L::c(1.0) - s2).sqrt())).canon()
 }
 
 /// t = u₀h is 1 − cos θ; sin θ = √(t(2 − t)); φ = 2πu₁. h is clamped to [0, 2].
@@ -31,7 +31,7 @@ pub fn uniform_cone<L: Lane>(u: V2<L>, h: L) -> V3<L> {
     let t = u.x * h;
     let sin_theta = sin_from_one_minus_cos(t);
     let (s, c) = u.y.sincos_2pi();
-    V3::new(sin_theta * c, sin_theta * s, L::c(1.0) - t)
+    V3::new(sin_theta * c, sin_theta * s, L::c(1.0) - t).canon()
 }
 
 /// 1/(2πh) per steradian inside the cone. h ≤ 0 (a degenerate cone) and NaN give 0.
@@ -50,7 +50,7 @@ pub fn uniform_cone_pdf<L: Lane>(h: L) -> L {
 pub fn uniform_cone_inverse<L: Lane>(w: V3<L>, h: L) -> V2<L> {
     let t = one_minus_z(w);
     let u0 = (t / h).clamp(L::c(0.0), L::c(1.0));
-    V2::new(u0, azimuth_fraction(w.x, w.y))
+    V2::new(u0, azimuth_fraction(w.x, w.y)).canon()
 }
 
 /// 1 − z of a unit vector, as (x² + y²)/(1 + z) in the upper half and 1 − z below.

@@ -29,7 +29,7 @@ pub(crate) fn concentric_with_radius<L: Lane>(u: V2<L>) -> (V2<L>, L) {
 
 #[inline(always)]
 pub fn concentric_disk<L: Lane>(u: V2<L>) -> V2<L> {
-    concentric_with_radius(u).0
+    concentric_with_radius(u).0.canon()
 }
 
 /// Inverse of the concentric map. The larger |coordinate| selects the wedge; atan of the ratio of
@@ -49,6 +49,7 @@ pub fn concentric_disk_inverse<L: Lane>(p: V2<L>) -> V2<L> {
         a.mul_add(L::c(0.5), L::c(0.5)),
         b.mul_add(L::c(0.5), L::c(0.5)),
     )
+    .canon()
 }
 
 /// The polar map: r = √u₀, φ = 2πu₁.
@@ -57,13 +58,13 @@ pub fn polar_disk<L: Lane>(u: V2<L>) -> V2<L> {
     let u = clamp_u(u);
     let r = u.x.sqrt();
     let (s, c) = u.y.sincos_2pi();
-    V2::new(r * c, r * s)
+    V2::new(r * c, r * s).canon()
 }
 
 /// Inverse of the polar map: u₀ = |p|², u₁ = azimuth/2π in [0, 1).
 #[inline(always)]
 pub fn polar_disk_inverse<L: Lane>(p: V2<L>) -> V2<L> {
-    V2::new(p.length_squared(), azimuth_fraction(p.x, p.y))
+    V2::new(p.length_squared(), azimuth_fraction(p.x, p.y)).canon()
 }
 
 /// Area pdf of a uniform point in the unit disk: 1/π.

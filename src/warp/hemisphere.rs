@@ -1,7 +1,7 @@
 //! Square → upper hemisphere (+z): uniform, and cosine-weighted by Malley's method.
 
 use crate::lane::{Lane, V2, V3};
-use crate::warp::common::{azimuth_fraction, clamp01, clamp_u};
+use crate::warp::common::{azimuth_fraction, clamp_u, clamp01};
 use crate::warp::disk::{concentric_disk_inverse, concentric_with_radius};
 
 /// Uniform hemisphere: z = u₀, r = √((1 − z)(1 + z)), φ = 2πu₁. The factored form keeps r
@@ -12,7 +12,7 @@ pub fn uniform_hemisphere<L: Lane>(u: V2<L>) -> V3<L> {
     let z = u.x;
     let r = ((L::c(1.0) - z) * (L::c(1.0) + z)).max(L::c(0.0)).sqrt();
     let (s, c) = u.y.sincos_2pi();
-    V3::new(r * c, r * s, z)
+    V3::new(r * c, r * s, z).canon()
 }
 
 #[inline(always)]
@@ -23,7 +23,7 @@ pub fn uniform_hemisphere_pdf<L: Lane>() -> L {
 /// Inverse: u₀ = z (clamped to [0, 1]), u₁ = azimuth/2π.
 #[inline(always)]
 pub fn uniform_hemisphere_inverse<L: Lane>(w: V3<L>) -> V2<L> {
-    V2::new(clamp01(w.z), azimuth_fraction(w.x, w.y))
+    V2::new(clamp01(w.z), azimuth_fraction(w.x, w.y)).canon()
 }
 
 /// Cosine hemisphere: the concentric disk lifted to the hemisphere, z = √((1 − r)(1 + r)) from
@@ -32,7 +32,7 @@ pub fn uniform_hemisphere_inverse<L: Lane>(w: V3<L>) -> V2<L> {
 pub fn cosine_hemisphere<L: Lane>(u: V2<L>) -> V3<L> {
     let (p, r) = concentric_with_radius(u);
     let z = ((L::c(1.0) - r) * (L::c(1.0) + r)).max(L::c(0.0)).sqrt();
-    V3::new(p.x, p.y, z)
+    V3::new(p.x, p.y, z).canon()
 }
 
 /// pdf per steradian: cos θ/π for cos θ > 0, else 0 (the rim and below; NaN gives 0).

@@ -17,8 +17,9 @@
 //!
 //! - u is clamped to [0, 1]²: u = 1, negative values and ±∞ land on the domain's boundary and
 //!   give a finite point of the domain.
-//! - NaN in u gives NaN in every coordinate of the result; spherical polygon samplers then
-//!   return pdf 0.
+//! - NaN in u gives NaN in every coordinate of the result, always the canonical quiet NaN
+//!   (bits 0x7fc0_0000), so that both widths return the same bits; spherical polygon samplers
+//!   then return pdf 0 and a fixed finite direction.
 //! - Degenerate geometry (a zero-size cone, coincident vertices, a light seen edge-on) gives
 //!   pdf 0, never NaN or ∞: callers drop samples with pdf 0.
 //! - Nothing panics, loops or allocates on any input.
@@ -50,8 +51,7 @@ pub mod generic {
         cone_h_from_cos, cone_h_from_sin2, uniform_cone, uniform_cone_inverse, uniform_cone_pdf,
     };
     pub use super::disk::{
-        concentric_disk, concentric_disk_inverse, polar_disk, polar_disk_inverse,
-        uniform_disk_pdf,
+        concentric_disk, concentric_disk_inverse, polar_disk, polar_disk_inverse, uniform_disk_pdf,
     };
     pub use super::hemisphere::{
         cosine_hemisphere, cosine_hemisphere_inverse, cosine_hemisphere_pdf, uniform_hemisphere,
@@ -251,7 +251,8 @@ pub fn uniform_triangle_pdf(b: Vec2) -> f32 {
 /// point in the plane, non-finite input) give pdf 0 and direction +z. NaN u gives a pdf of 0.
 #[inline]
 pub fn spherical_triangle(u: Vec2, a: Vec3, b: Vec3, c: Vec3) -> (Vec3, f32) {
-    let (w, pdf) = spherical_triangle::spherical_triangle::<f32>(u.into(), a.into(), b.into(), c.into());
+    let (w, pdf) =
+        spherical_triangle::spherical_triangle::<f32>(u.into(), a.into(), b.into(), c.into());
     (w.into(), pdf)
 }
 
@@ -265,7 +266,8 @@ pub fn spherical_triangle_pdf(w: Vec3, a: Vec3, b: Vec3, c: Vec3) -> f32 {
 /// Inverse of [`spherical_triangle`]: the u that maps to unit direction `w`, clamped to [0, 1]².
 #[inline]
 pub fn spherical_triangle_inverse(w: Vec3, a: Vec3, b: Vec3, c: Vec3) -> Vec2 {
-    spherical_triangle::spherical_triangle_inverse::<f32>(w.into(), a.into(), b.into(), c.into()).into()
+    spherical_triangle::spherical_triangle_inverse::<f32>(w.into(), a.into(), b.into(), c.into())
+        .into()
 }
 
 /// A point on rectangle corner + s·ex + t·ey (relative to the shading point; ex ⟂ ey) and its pdf
@@ -276,7 +278,12 @@ pub fn spherical_triangle_inverse(w: Vec3, a: Vec3, b: Vec3, c: Vec3) -> Vec2 {
 /// edge-on, or degenerate, the pdf is 0 and the point is `corner`. NaN u gives a pdf of 0.
 #[inline]
 pub fn spherical_rectangle(u: Vec2, corner: Vec3, ex: Vec3, ey: Vec3) -> (Vec3, f32) {
-    let (w, pdf) = spherical_rectangle::spherical_rectangle::<f32>(u.into(), corner.into(), ex.into(), ey.into());
+    let (w, pdf) = spherical_rectangle::spherical_rectangle::<f32>(
+        u.into(),
+        corner.into(),
+        ex.into(),
+        ey.into(),
+    );
     (w.into(), pdf)
 }
 
@@ -284,13 +291,24 @@ pub fn spherical_rectangle(u: Vec2, corner: Vec3, ex: Vec3, ey: Vec3) -> (Vec3, 
 /// misses the rectangle or it is degenerate.
 #[inline]
 pub fn spherical_rectangle_pdf(w: Vec3, corner: Vec3, ex: Vec3, ey: Vec3) -> f32 {
-    spherical_rectangle::spherical_rectangle_pdf::<f32>(w.into(), corner.into(), ex.into(), ey.into())
+    spherical_rectangle::spherical_rectangle_pdf::<f32>(
+        w.into(),
+        corner.into(),
+        ex.into(),
+        ey.into(),
+    )
 }
 
 /// Inverse of [`spherical_rectangle`]: the u that maps to point `p` of the rectangle, in [0, 1]².
 #[inline]
 pub fn spherical_rectangle_inverse(p: Vec3, corner: Vec3, ex: Vec3, ey: Vec3) -> Vec2 {
-    spherical_rectangle::spherical_rectangle_inverse::<f32>(p.into(), corner.into(), ex.into(), ey.into()).into()
+    spherical_rectangle::spherical_rectangle_inverse::<f32>(
+        p.into(),
+        corner.into(),
+        ex.into(),
+        ey.into(),
+    )
+    .into()
 }
 
 /// [0, 1) → [−1, 1] with pdf 1 − |x| (the tent pixel filter), by inverting each half.

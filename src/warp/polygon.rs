@@ -19,7 +19,10 @@ pub(crate) fn vos_solid_angle<L: Lane>(
     lb: L,
     lc: L,
 ) -> L {
-    let den = (la * lb).mul_add(lc, a.dot(b).mul_add(lc, a.dot(c).mul_add(lb, b.dot(c) * la)));
+    let den = (la * lb).mul_add(
+        lc,
+        a.dot(b).mul_add(lc, a.dot(c).mul_add(lb, b.dot(c) * la)),
+    );
     L::c(2.0) * triple.abs().atan2(den)
 }
 

@@ -119,8 +119,8 @@ fn urena<L: Lane>(s: &Setup<L>, u: V2<L>) -> (L, L) {
     let au = u.x.mul_add(s.s_map, s.k);
     let (sa, ca) = au.sin_cos();
     let fu = ca.mul_add(s.b0, -s.b1) / sa;
-    let cu = (L::c(1.0).copysign(fu) / fu.mul_add(fu, s.b0 * s.b0).sqrt())
-        .clamp(L::c(-1.0), L::c(1.0));
+    let cu =
+        (L::c(1.0).copysign(fu) / fu.mul_add(fu, s.b0 * s.b0).sqrt()).clamp(L::c(-1.0), L::c(1.0));
     let sin_u = ((L::c(1.0) - cu) * (L::c(1.0) + cu)).max(L::c(0.0)).sqrt();
     let xu = (-(cu * s.z0) / sin_u).clamp(s.x0, s.x1);
     let d = xu.mul_add(xu, s.z0 * s.z0).sqrt();
@@ -148,12 +148,7 @@ fn pdf_of<L: Lane>(s: &Setup<L>, w: V3<L>) -> L {
 
 /// A point on the rectangle and its pdf per steradian. See the public face for the contract.
 #[inline(always)]
-pub fn spherical_rectangle<L: Lane>(
-    u: V2<L>,
-    corner: V3<L>,
-    ex: V3<L>,
-    ey: V3<L>,
-) -> (V3<L>, L) {
+pub fn spherical_rectangle<L: Lane>(u: V2<L>, corner: V3<L>, ex: V3<L>, ey: V3<L>) -> (V3<L>, L) {
     let u = clamp_u(u);
     let s = setup(corner, ex, ey);
     let (xu, yv) = urena(&s, u);
@@ -180,19 +175,11 @@ fn hit<L: Lane>(s: &Setup<L>, w: V3<L>) -> (V2<L>, L::Mask) {
 /// pdf per steradian that [`spherical_rectangle`] returns a point in direction `w` (unit); 0 when
 /// `w` misses the rectangle.
 #[inline(always)]
-pub fn spherical_rectangle_pdf<L: Lane>(
-    w: V3<L>,
-    corner: V3<L>,
-    ex: V3<L>,
-    ey: V3<L>,
-) -> L {
+pub fn spherical_rectangle_pdf<L: Lane>(w: V3<L>, corner: V3<L>, ex: V3<L>, ey: V3<L>) -> L {
     let s = setup(corner, ex, ey);
     let (st, front) = hit(&s, w);
-    let inside = front
-        & st.x.ge(L::c(0.0))
-        & st.x.le(L::c(1.0))
-        & st.y.ge(L::c(0.0))
-        & st.y.le(L::c(1.0));
+    let inside =
+        front & st.x.ge(L::c(0.0)) & st.x.le(L::c(1.0)) & st.y.ge(L::c(0.0)) & st.y.le(L::c(1.0));
     L::select(s.valid & inside, pdf_of(&s, w), L::c(0.0))
 }
 
@@ -217,5 +204,5 @@ pub fn spherical_rectangle_inverse<L: Lane>(
     let h0 = elevation(s.y0, dist);
     let h1 = elevation(s.y1, dist);
     let u1 = (elevation(y, dist) - h0) / (h1 - h0);
-    clamp_u(V2::select(s.by_area, st, V2::new(u0, u1)))
+    clamp_u(V2::select(s.by_area, st, V2::new(u0, u1))).canon()
 }

@@ -40,7 +40,11 @@ struct Setup<L: Lane> {
 #[inline(always)]
 fn setup<L: Lane>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     let (la, lb, lc) = (a.length(), b.length(), c.length());
-    let (ua, ub, uc) = (a.scale(L::c(1.0) / la), b.scale(L::c(1.0) / lb), c.scale(L::c(1.0) / lc));
+    let (ua, ub, uc) = (
+        a.scale(L::c(1.0) / la),
+        b.scale(L::c(1.0) / lb),
+        c.scale(L::c(1.0) / lc),
+    );
     let e1 = b - a;
     let e2 = c - a;
     let n = e1.cross(e2);
@@ -109,7 +113,9 @@ fn arvo<L: Lane>(s: &Setup<L>, u: V2<L>) -> V3<L> {
     let d = c_hat - s.ub;
     let one_minus_z = u.y * (L::c(0.5) * d.dot(d));
     let z = L::c(1.0) - one_minus_z;
-    let sin_z = (one_minus_z * (L::c(2.0) - one_minus_z)).max(L::c(0.0)).sqrt();
+    let sin_z = (one_minus_z * (L::c(2.0) - one_minus_z))
+        .max(L::c(0.0))
+        .sqrt();
     s.ub.scale(z) + ortho(c_hat, s.ub).scale(sin_z)
 }
 
@@ -128,12 +134,7 @@ fn barycentrics<L: Lane>(w: V3<L>, a: V3<L>, b: V3<L>, c: V3<L>, n: V3<L>) -> (V
 
 /// Direction towards (a, b, c) and its pdf per steradian. See the public face for the contract.
 #[inline(always)]
-pub fn spherical_triangle<L: Lane>(
-    u: V2<L>,
-    a: V3<L>,
-    b: V3<L>,
-    c: V3<L>,
-) -> (V3<L>, L) {
+pub fn spherical_triangle<L: Lane>(u: V2<L>, a: V3<L>, b: V3<L>, c: V3<L>) -> (V3<L>, L) {
     let u = clamp_u(u);
     let s = setup(a, b, c);
     let w_sph = arvo(&s, u);
@@ -161,10 +162,7 @@ fn pdf_of<L: Lane>(s: &Setup<L>, w: V3<L>) -> L {
 pub fn spherical_triangle_pdf<L: Lane>(w: V3<L>, a: V3<L>, b: V3<L>, c: V3<L>) -> L {
     let s = setup(a, b, c);
     let (bary, front) = barycentrics(w, a, b, c, s.n);
-    let inside = front
-        & bary.x.ge(L::c(0.0))
-        & bary.y.ge(L::c(0.0))
-        & bary.z.ge(L::c(0.0));
+    let inside = front & bary.x.ge(L::c(0.0)) & bary.y.ge(L::c(0.0)) & bary.z.ge(L::c(0.0));
     L::select(s.valid & inside, pdf_of(&s, w), L::c(0.0))
 }
 
@@ -174,12 +172,7 @@ pub fn spherical_triangle_pdf<L: Lane>(w: V3<L>, a: V3<L>, b: V3<L>, c: V3<L>) -
 /// of the arc B Ĉ covered, |w − B|²/|Ĉ − B|², and u₀ the area of A B Ĉ over Ω. By area: the
 /// low-distortion triangle inverse of w's barycentrics.
 #[inline(always)]
-pub fn spherical_triangle_inverse<L: Lane>(
-    w: V3<L>,
-    a: V3<L>,
-    b: V3<L>,
-    c: V3<L>,
-) -> V2<L> {
+pub fn spherical_triangle_inverse<L: Lane>(w: V3<L>, a: V3<L>, b: V3<L>, c: V3<L>) -> V2<L> {
     let s = setup(a, b, c);
     let (bary, _) = barycentrics(w, a, b, c, s.n);
     let u_area = uniform_triangle_inverse(bary);
@@ -211,5 +204,5 @@ pub fn spherical_triangle_inverse<L: Lane>(
         L::select(at_b, L::c(0.0), u0),
         L::select(at_b, L::c(0.0), u1),
     );
-    clamp_u(V2::select(s.by_area, u_area, u_sph))
+    clamp_u(V2::select(s.by_area, u_area, u_sph)).canon()
 }

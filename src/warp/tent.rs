@@ -10,7 +10,7 @@ pub fn tent<L: Lane>(u: L) -> L {
     let left = u.lt(L::c(0.5));
     let v = L::select(left, u, L::c(1.0) - u);
     let x = L::c(1.0) - (v * L::c(2.0)).sqrt();
-    L::select(left, -x, x)
+    L::select(left, -x, x).canon()
 }
 
 /// 1 − |x| on [−1, 1], else 0 (NaN gives 0).
@@ -26,5 +26,5 @@ pub fn tent_inverse<L: Lane>(x: L) -> L {
     let x = x.clamp(L::c(-1.0), L::c(1.0));
     let d = L::c(1.0) - x.abs();
     let half_d2 = d * d * L::c(0.5);
-    L::select(x.lt(L::c(0.0)), half_d2, L::c(1.0) - half_d2)
+    L::select(x.lt(L::c(0.0)), half_d2, L::c(1.0) - half_d2).canon()
 }

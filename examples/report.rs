@@ -1,0 +1,612 @@
+//! The main job: speed against error for every warp.
+//!
+//! `cargo run --release --example report` prints, per warp, the scalar and x8 time per sample on
+//! in-cache points (medians of repeated runs, the two forms interleaved so that their ratio comes
+//! from one run), the speedup, the worst error against the f64 instance of the same generic code,
+//! the worst pdf error, and the χ² p-value of 10⁶ samples. `-- --quick` is a shorter run for CI;
+//! `-- --json PATH` also writes the numbers as JSON.
+
+use std::fmt::Write as _;
+use std::hint::black_box;
+use std::time::Instant;
+
+use glam::{DVec2, DVec3, Vec2, Vec3};
+use mcsample::lane::{V2, V3};
+use mcsample::verify::{Cap, ChiSquare};
+use mcsample::warp::{self, generic as g};
+use mcsample::x8::{F32x8, Vec2x8, Vec3x8};
+use rand_core::Rng;
+use rand_pcg::Pcg32;
+
+/// In-cache working set for timings, in points.
+const POINTS: usize = 4096;
+
+struct Config {
+    quick: bool,
+    json: Option<String>,
+}
+
+struct Row {
+    name: String,
+    scalar_ns: f64,
+    x8_ns: f64,
+    max_abs_err: f64,
+    worst_u: Vec2,
+    max_pdf_rel_err: f64,
+    chi2_p: f64,
+}
+
+fn uniform_points(n: usize, seed: u64) -> Vec<Vec2> {
+    let mut rng = Pcg32::new(seed, 0xda3e_39cb_94b9_5bdb);
+    let mut f = move || (rng.next_u32() >> 8) as f32 * (1.0 / 16_777_216.0);
+    (0..n).map(|_| Vec2::new(f(), f())).collect()
+}
+
+/// Points for the error sweep: random, plus a stratified grid, plus the square's edges and the
+/// lines where the maps change branch.
+fn error_points(quick: bool) -> Vec<Vec2> {
+    let mut v = uniform_points(if quick { 1 << 16 } else { 1 << 20 }, 5);
+    let m = if quick { 128 } else { 512 };
+    for i in 0..m {
+        for j in 0..m {
+            v.push(Vec2::new(
+                (i as f32 + 0.5) / m as f32,
+                (j as f32 + 0.5) / m as f32,
+            ));
+        }
+    }
+    let edges = [0.0, 1e-7, 0.5, 0.25, 0.75, warp::ONE_MINUS_EPS];
+    for &a in &edges {
+        for k in 0..=256 {
+            let b = (k as f32 / 256.0).min(warp::ONE_MINUS_EPS);
+            v.push(Vec2::new(a, b));
+            v.push(Vec2::new(b, a));
+        }
+    }
+    v
+}
+
+/// Median ns per sample of the scalar and x8 loops over the same points, interleaved.
+fn time_pair(
+    cfg: &Config,
+    pts: &[Vec2],
+    packets: &[Vec2x8],
+    s: &dyn Fn(&[Vec2], &mut [Vec3]),
+    p: &dyn Fn(&[Vec2x8], &mut [Vec3x8]),
+) -> (f64, f64) {
+    let mut out = vec![Vec3::ZERO; pts.len()];
+    let mut out8 = vec![Vec3x8::splat(Vec3::ZERO); packets.len()];
+    let runs = if cfg.quick { 9 } else { 41 };
+    let target = if cfg.quick { 2e-4 } else { 2e-3 }; // seconds per run
+    let mut reps = 1usize;
+    loop {
+        let t = Instant::now();
+        for _ in 0..reps {
+            s(black_box(pts), &mut out);
+        }
+        if t.elapsed().as_secs_f64() > target / 4.0 {
+            break;
+        }
+        reps *= 2;
+    }
+    let (mut ts, mut tp) = (Vec::with_capacity(runs), Vec::with_capacity(runs));
+    for _ in 0..runs {
+        let t = Instant::now();
+        for _ in 0..reps {
+            s(black_box(pts), &mut out);
+        }
+        ts.push(t.elapsed().as_secs_f64());
+        black_box(&out);
+        let t = Instant::now();
+        for _ in 0..reps {
+            p(black_box(packets), &mut out8);
+        }
+        tp.push(t.elapsed().as_secs_f64());
+        black_box(&out8);
+    }
+    let med = |v: &mut Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2] * 1e9 / (reps * pts.len()) as f64
+    };
+    (med(&mut ts), med(&mut tp))
+}
+
+/// One warp of the table: its forms and how to judge it.
+struct Warp<'a> {
+    name: String,
+    /// Scalar, x8 and f64 forms, with outputs widened to 3D (disks get z = 0).
+    s: Box<dyn Fn(Vec2) -> Vec3 + 'a>,
+    p: Box<dyn Fn(Vec2x8) -> Vec3x8 + 'a>,
+    r: Box<dyn Fn(DVec2) -> DVec3 + 'a>,
+    /// pdf of an output point, in f32 and in f64 (evaluated at the same f32 point).
+    pdf_s: Box<dyn Fn(Vec3) -> f32 + 'a>,
+    pdf_r: Box<dyn Fn(DVec3) -> f64 + 'a>,
+    /// The χ² p-value of `n` samples.
+    chi2: Box<dyn Fn(usize) -> f64 + 'a>,
+}
+
+fn d2(u: DVec2) -> V2<f64> {
+    u.into()
+}
+fn d3(v: Vec3) -> V3<f64> {
+    v.as_dvec3().into()
+}
+fn o3(v: V3<f64>) -> DVec3 {
+    v.into()
+}
+
+fn catalogue<'a>() -> Vec<Warp<'a>> {
+    let mut w: Vec<Warp<'a>> = Vec::new();
+    let inv_pi = std::f64::consts::FRAC_1_PI;
+    let seq = |seed| {
+        let pts = uniform_points(1_000_000, seed);
+        move |i: usize| pts[i]
+    };
+
+    macro_rules! disk {
+        ($name:literal, $f:ident) => {
+            w.push(Warp {
+                name: $name.into(),
+                s: Box::new(|u| warp::$f(u).extend(0.0)),
+                p: Box::new(|u| {
+                    let q = warp::x8::$f(u);
+                    Vec3x8::new(q.x, q.y, F32x8::ZERO)
+                }),
+                r: Box::new(|u| DVec2::from(g::$f::<f64>(d2(u))).extend(0.0)),
+                pdf_s: Box::new(|_| warp::uniform_disk_pdf()),
+                pdf_r: Box::new(|_| g::uniform_disk_pdf::<f64>()),
+                chi2: Box::new(move |n| {
+                    let u = seq(1);
+                    ChiSquare::disk()
+                        .samples(n)
+                        .run(|i| warp::$f(u(i)), |_: DVec2| inv_pi)
+                        .p_value
+                }),
+            });
+        };
+    }
+    disk!("concentric_disk", concentric_disk);
+    disk!("polar_disk", polar_disk);
+
+    macro_rules! dir {
+        ($name:expr, $hs:expr, $ires:expr, |$u:ident| $s:expr, $p:expr, $r:expr, |$w:ident| $pdf_s:expr, $pdf_r:expr) => {
+            w.push(Warp {
+                name: $name,
+                s: Box::new(move |$u: Vec2| $s),
+                p: Box::new(move |$u: Vec2x8| $p),
+                r: Box::new(move |u: DVec2| {
+                    let $u = d2(u);
+                    o3($r)
+                }),
+                pdf_s: Box::new(move |$w: Vec3| $pdf_s),
+                pdf_r: Box::new(move |w: DVec3| {
+                    let $w: V3<f64> = w.into();
+                    $pdf_r
+                }),
+                chi2: Box::new(move |n| {
+                    let u = seq(2);
+                    let sample = |i: usize| {
+                        let $u = u(i);
+                        $s
+                    };
+                    Cap::z($hs)
+                        .test(
+                            ChiSquare::sphere().samples(n).ires($ires),
+                            sample,
+                            |w: DVec3| {
+                                let $w = w.as_vec3();
+                                ($pdf_s) as f64
+                            },
+                        )
+                        .p_value
+                }),
+            });
+        };
+    }
+    dir!(
+        "uniform_hemisphere".into(),
+        1.0,
+        6,
+        |u| warp::uniform_hemisphere(u),
+        warp::x8::uniform_hemisphere(u),
+        g::uniform_hemisphere(u),
+        |w| if w.z > 0.0 {
+            warp::uniform_hemisphere_pdf()
+        } else {
+            0.0
+        },
+        if w.z > 0.0 {
+            g::uniform_hemisphere_pdf::<f64>()
+        } else {
+            0.0
+        }
+    );
+    dir!(
+        "cosine_hemisphere".into(),
+        1.0,
+        6,
+        |u| warp::cosine_hemisphere(u),
+        warp::x8::cosine_hemisphere(u),
+        g::cosine_hemisphere(u),
+        |w| warp::cosine_hemisphere_pdf(w.z),
+        g::cosine_hemisphere_pdf(w.z)
+    );
+    dir!(
+        "uniform_sphere".into(),
+        2.0,
+        6,
+        |u| warp::uniform_sphere(u),
+        warp::x8::uniform_sphere(u),
+        g::uniform_sphere(u),
+        |_w| warp::uniform_sphere_pdf(),
+        g::uniform_sphere_pdf::<f64>()
+    );
+    for h in [0.3f32, 1e-3] {
+        let h8 = F32x8::splat(h);
+        dir!(
+            format!("uniform_cone h={h}"),
+            h as f64,
+            6,
+            |u| warp::uniform_cone(u, h),
+            warp::x8::uniform_cone(u, h8),
+            g::uniform_cone(u, h as f64),
+            |_w| warp::uniform_cone_pdf(h),
+            g::uniform_cone_pdf(h as f64)
+        );
+    }
+    for (n, hs) in [(1.0f32, 1.0), (20.0, 0.8), (500.0, 0.06)] {
+        let n8 = F32x8::splat(n);
+        dir!(
+            format!("phong_lobe n={n}"),
+            hs,
+            6,
+            |u| warp::phong_lobe(u, n),
+            warp::x8::phong_lobe(u, n8),
+            g::phong_lobe(u, n as f64),
+            |w| warp::phong_lobe_pdf(w.z, n),
+            g::phong_lobe_pdf(w.z, n as f64)
+        );
+    }
+
+    w.push(Warp {
+        name: "uniform_triangle".into(),
+        s: Box::new(warp::uniform_triangle),
+        p: Box::new(warp::x8::uniform_triangle),
+        r: Box::new(|u| o3(g::uniform_triangle::<f64>(d2(u)))),
+        pdf_s: Box::new(|b| warp::uniform_triangle_pdf(b.truncate())),
+        pdf_r: Box::new(|b| g::uniform_triangle_pdf::<f64>(d2(b.truncate()))),
+        chi2: Box::new(move |n| {
+            let u = seq(3);
+            ChiSquare::square()
+                .samples(n)
+                .ires(16)
+                .run(
+                    |i| {
+                        let b = warp::uniform_triangle(u(i));
+                        DVec2::new(b.x as f64, b.y as f64)
+                    },
+                    |p: DVec2| warp::uniform_triangle_pdf(p.as_vec2()) as f64,
+                )
+                .p_value
+        }),
+    });
+    w.push(Warp {
+        name: "tent".into(),
+        s: Box::new(|u| Vec3::new(warp::tent(u.x), warp::tent(u.y), 0.0)),
+        p: Box::new(|u| Vec3x8::new(warp::x8::tent(u.x), warp::x8::tent(u.y), F32x8::ZERO)),
+        r: Box::new(|u| DVec3::new(g::tent(u.x), g::tent(u.y), 0.0)),
+        pdf_s: Box::new(|x| warp::tent_pdf(x.x) * warp::tent_pdf(x.y)),
+        pdf_r: Box::new(|x| g::tent_pdf(x.x) * g::tent_pdf(x.y)),
+        chi2: Box::new(move |n| {
+            let u = seq(4);
+            ChiSquare::square()
+                .samples(n)
+                .run(
+                    |i| {
+                        let v = u(i);
+                        DVec2::new(
+                            (warp::tent(v.x) as f64 + 1.0) / 2.0,
+                            (warp::tent(v.y) as f64 + 1.0) / 2.0,
+                        )
+                    },
+                    |p: DVec2| {
+                        4.0 * (warp::tent_pdf((2.0 * p.x - 1.0) as f32)
+                            * warp::tent_pdf((2.0 * p.y - 1.0) as f32))
+                            as f64
+                    },
+                )
+                .p_value
+        }),
+    });
+
+    let tri = |s: f32| {
+        [
+            Vec3::new(-0.6 * s, -0.4 * s, 1.0),
+            Vec3::new(0.7 * s, -0.3 * s, 1.0 + 0.2 * s),
+            Vec3::new(0.1 * s, 0.8 * s, 1.0 - 0.1 * s),
+        ]
+    };
+    for (label, [a, b, c]) in [
+        ("large", tri(1.0)),
+        ("small", tri(0.05)),
+        ("area", tri(0.01)),
+    ] {
+        let (a8, b8, c8) = (Vec3x8::splat(a), Vec3x8::splat(b), Vec3x8::splat(c));
+        let cap = Cap::around(&[a, b, c]);
+        w.push(Warp {
+            name: format!("spherical_triangle {label}"),
+            s: Box::new(move |u| warp::spherical_triangle(u, a, b, c).0),
+            p: Box::new(move |u| warp::x8::spherical_triangle(u, a8, b8, c8).0),
+            r: Box::new(move |u| o3(g::spherical_triangle::<f64>(d2(u), d3(a), d3(b), d3(c)).0)),
+            pdf_s: Box::new(move |x| warp::spherical_triangle_pdf(x, a, b, c)),
+            pdf_r: Box::new(move |x| {
+                g::spherical_triangle_pdf::<f64>(x.into(), d3(a), d3(b), d3(c))
+            }),
+            chi2: Box::new(move |n| {
+                let u = seq(5);
+                cap.test(
+                    ChiSquare::sphere().samples(n).ires(32),
+                    |i| warp::spherical_triangle(u(i), a, b, c).0,
+                    |x: DVec3| warp::spherical_triangle_pdf(x.as_vec3(), a, b, c) as f64,
+                )
+                .p_value
+            }),
+        });
+    }
+    let rect = |s: f32| {
+        [
+            Vec3::new(-0.4 * s, -0.7 * s, 1.0),
+            Vec3::new(1.1 * s, 0.0, 0.3 * s),
+            Vec3::new(0.0, 0.8 * s, 0.0),
+        ]
+    };
+    for (label, [s0, ex, ey]) in [
+        ("large", rect(1.0)),
+        ("small", rect(0.05)),
+        ("area", rect(0.01)),
+    ] {
+        let (s8, ex8, ey8) = (Vec3x8::splat(s0), Vec3x8::splat(ex), Vec3x8::splat(ey));
+        let cap = Cap::around(&[s0, s0 + ex, s0 + ey, s0 + ex + ey]);
+        w.push(Warp {
+            name: format!("spherical_rectangle {label}"),
+            s: Box::new(move |u| warp::spherical_rectangle(u, s0, ex, ey).0),
+            p: Box::new(move |u| warp::x8::spherical_rectangle(u, s8, ex8, ey8).0),
+            r: Box::new(
+                move |u| o3(g::spherical_rectangle::<f64>(d2(u), d3(s0), d3(ex), d3(ey)).0),
+            ),
+            pdf_s: Box::new(move |x| warp::spherical_rectangle_pdf(x.normalize(), s0, ex, ey)),
+            pdf_r: Box::new(move |x| {
+                g::spherical_rectangle_pdf::<f64>(x.normalize().into(), d3(s0), d3(ex), d3(ey))
+            }),
+            chi2: Box::new(move |n| {
+                let u = seq(6);
+                cap.test(
+                    ChiSquare::sphere().samples(n).ires(32),
+                    |i| warp::spherical_rectangle(u(i), s0, ex, ey).0.normalize(),
+                    |x: DVec3| warp::spherical_rectangle_pdf(x.as_vec3(), s0, ex, ey) as f64,
+                )
+                .p_value
+            }),
+        });
+    }
+    w
+}
+
+fn measure(cfg: &Config, wp: &Warp, pts: &[Vec2], packets: &[Vec2x8], err_pts: &[Vec2]) -> Row {
+    let (scalar_ns, x8_ns) = time_pair(
+        cfg,
+        pts,
+        packets,
+        &|u, o| {
+            for (o, &u) in o.iter_mut().zip(u) {
+                *o = (wp.s)(u);
+            }
+        },
+        &|u, o| {
+            for (o, &u) in o.iter_mut().zip(u) {
+                *o = (wp.p)(u);
+            }
+        },
+    );
+    let mut max_abs_err = 0.0f64;
+    let mut worst_u = Vec2::ZERO;
+    let mut max_pdf_rel_err = 0.0f64;
+    for &u in err_pts {
+        let a = (wp.s)(u);
+        let b = (wp.r)(u.as_dvec2());
+        let e = (a.as_dvec3() - b).abs().max_element();
+        if worse(e, max_abs_err) {
+            max_abs_err = e;
+            worst_u = u;
+        }
+        let ps = (wp.pdf_s)(a) as f64;
+        let pr = (wp.pdf_r)(a.as_dvec3());
+        if pr > 0.0 {
+            let rel = ((ps - pr) / pr).abs();
+            if worse(rel, max_pdf_rel_err) {
+                max_pdf_rel_err = rel;
+            }
+        }
+    }
+    let chi2_p = (wp.chi2)(if cfg.quick { 200_000 } else { 1_000_000 });
+    Row {
+        name: wp.name.clone(),
+        scalar_ns,
+        x8_ns,
+        max_abs_err,
+        worst_u,
+        max_pdf_rel_err,
+        chi2_p,
+    }
+}
+
+fn cpu_name() -> String {
+    std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("model name"))
+                .map(|l| l.split(':').nth(1).unwrap_or("").trim().to_string())
+        })
+        .unwrap_or_else(|| std::env::consts::ARCH.to_string())
+}
+
+fn target_features() -> Vec<&'static str> {
+    let mut f = Vec::new();
+    macro_rules! feat {
+        ($($name:tt),*) => {$( if cfg!(target_feature = $name) { f.push($name); } )*};
+    }
+    feat!("sse2", "sse4.1", "avx", "avx2", "fma", "avx512f", "neon");
+    f
+}
+
+/// Large arrays: x8 cosine_hemisphere against a copy kernel that moves the same bytes.
+fn streaming(cfg: &Config) -> (f64, f64) {
+    let n = if cfg.quick { 1 << 20 } else { 1 << 24 };
+    let pts = uniform_points(n, 9);
+    let packets: Vec<Vec2x8> = pts
+        .chunks_exact(8)
+        .map(|c| Vec2x8::from(<[Vec2; 8]>::try_from(c).unwrap()))
+        .collect();
+    drop(pts);
+    let mut out8 = vec![Vec3x8::splat(Vec3::ZERO); packets.len()];
+    let runs = if cfg.quick { 3 } else { 11 };
+    let (mut tc, mut tw) = (Vec::new(), Vec::new());
+    for _ in 0..runs {
+        let t = Instant::now();
+        for (o, u) in out8.iter_mut().zip(black_box(&packets)) {
+            *o = Vec3x8::new(u.x, u.y, u.x);
+        }
+        black_box(&out8);
+        tc.push(t.elapsed().as_secs_f64());
+        let t = Instant::now();
+        for (o, &u) in out8.iter_mut().zip(black_box(&packets)) {
+            *o = warp::x8::cosine_hemisphere(u);
+        }
+        black_box(&out8);
+        tw.push(t.elapsed().as_secs_f64());
+    }
+    tc.sort_by(f64::total_cmp);
+    tw.sort_by(f64::total_cmp);
+    (tc[runs / 2] * 1e9 / n as f64, tw[runs / 2] * 1e9 / n as f64)
+}
+
+fn main() {
+    let mut cfg = Config {
+        quick: false,
+        json: None,
+    };
+    let mut args = std::env::args().skip(1);
+    while let Some(a) = args.next() {
+        match a.as_str() {
+            "--quick" => cfg.quick = true,
+            "--json" => cfg.json = args.next(),
+            other => {
+                eprintln!("unknown argument {other}; use --quick and/or --json PATH");
+                std::process::exit(2);
+            }
+        }
+    }
+    let cpu = cpu_name();
+    let feats = target_features();
+    println!("mcsample report{}", if cfg.quick { " (quick)" } else { "" });
+    println!("  CPU: {cpu}");
+    println!("  target features: {}", feats.join(", "));
+    println!(
+        "  timings: {POINTS} in-cache points, median of interleaved runs; errors vs the f64 instance;"
+    );
+    println!(
+        "  χ²: {} samples, Mitsuba's method (p < 1e-3 would be a failure at the Šidák level)\n",
+        if cfg.quick { "2e5" } else { "1e6" }
+    );
+
+    let pts = uniform_points(POINTS, 1);
+    let packets: Vec<Vec2x8> = pts
+        .chunks_exact(8)
+        .map(|c| Vec2x8::from(<[Vec2; 8]>::try_from(c).unwrap()))
+        .collect();
+    let err_pts = error_points(cfg.quick);
+
+    println!(
+        "{:<28} {:>10} {:>10} {:>8} {:>12} {:>24} {:>12} {:>9}",
+        "warp", "scalar ns", "x8 ns", "speedup", "max abs err", "worst u", "pdf rel err", "χ² p"
+    );
+    let mut rows = Vec::new();
+    for wp in catalogue() {
+        let r = measure(&cfg, &wp, &pts, &packets, &err_pts);
+        println!(
+            "{:<28} {:>10.2} {:>10.2} {:>7.1}× {:>12.2e} {:>24} {:>12.2e} {:>9.4}",
+            r.name,
+            r.scalar_ns,
+            r.x8_ns,
+            r.scalar_ns / r.x8_ns,
+            r.max_abs_err,
+            format!("({:.7}, {:.7})", r.worst_u.x, r.worst_u.y),
+            r.max_pdf_rel_err,
+            r.chi2_p
+        );
+        rows.push(r);
+    }
+    let (copy_ns, cos_ns) = streaming(&cfg);
+    println!(
+        "\nstreaming ({} points): copy kernel {copy_ns:.3} ns/pt, x8 cosine_hemisphere {cos_ns:.3} ns/pt, ratio {:.2}",
+        if cfg.quick { "2^20" } else { "2^24" },
+        cos_ns / copy_ns
+    );
+
+    if let Some(path) = &cfg.json {
+        let mut s = String::new();
+        let esc = |x: &str| x.replace('\\', "\\\\").replace('"', "\\\"");
+        let num = |x: f64| {
+            if x.is_finite() {
+                format!("{x:e}")
+            } else {
+                "null".into()
+            }
+        };
+        write!(
+            s,
+            "{{\"build\": {{\"target_features\": [{}], \"cpu\": \"{}\"}}, ",
+            feats
+                .iter()
+                .map(|f| format!("\"{f}\""))
+                .collect::<Vec<_>>()
+                .join(", "),
+            esc(&cpu)
+        )
+        .unwrap();
+        write!(
+            s,
+            "\"streaming\": {{\"copy_ns\": {}, \"cosine_hemisphere_x8_ns\": {}}}, ",
+            num(copy_ns),
+            num(cos_ns)
+        )
+        .unwrap();
+        s.push_str("\"warps\": [");
+        for (i, r) in rows.iter().enumerate() {
+            if i > 0 {
+                s.push_str(", ");
+            }
+            write!(
+                s,
+                "{{\"name\": \"{}\", \"scalar_ns\": {}, \"x8_ns\": {}, \"speedup\": {}, \"max_abs_err\": {}, \"max_pdf_rel_err\": {}, \"chi2_p\": {}}}",
+                esc(&r.name),
+                num(r.scalar_ns),
+                num(r.x8_ns),
+                num(r.scalar_ns / r.x8_ns),
+                num(r.max_abs_err),
+                num(r.max_pdf_rel_err),
+                num(r.chi2_p)
+            )
+            .unwrap();
+        }
+        s.push_str("]}\n");
+        std::fs::write(path, s).expect("cannot write the JSON report");
+        println!("wrote {path}");
+    }
+}
+
+/// True when `e` is a new worst error; NaN always is, so it cannot hide.
+fn worse<T: PartialOrd>(e: T, current: T) -> bool {
+    e.partial_cmp(&current) != Some(std::cmp::Ordering::Less) && e.partial_cmp(&current) != Some(std::cmp::Ordering::Equal)
+}

@@ -1,0 +1,249 @@
+//! Lane equality: a packet function against its scalar twin, lane by lane, bit for bit.
+//!
+//! See the [module documentation](super) for an example.
+
+use core::fmt;
+
+use glam::{Vec2, Vec3};
+use std::boxed::Box;
+use std::format;
+use std::string::String;
+use std::vec::Vec;
+
+use crate::x8::{F32x8, U32x8, Vec2x8, Vec3x8};
+
+/// A value whose identity is its bit pattern: the f32 and u32 components, in order.
+///
+/// f32 components are compared through `to_bits`, so 0.0 and −0.0 differ, and NaNs compare
+/// equal only when their bit patterns (sign and payload included) are identical.
+pub trait Bits {
+    /// Append the bit patterns of the components to `out`.
+    fn push_bits(&self, out: &mut Vec<u32>);
+
+    /// The bit patterns of the components.
+    fn bits(&self) -> Vec<u32> {
+        let mut out = Vec::new();
+        self.push_bits(&mut out);
+        out
+    }
+}
+
+impl Bits for f32 {
+    fn push_bits(&self, out: &mut Vec<u32>) {
+        out.push(self.to_bits());
+    }
+}
+
+impl Bits for u32 {
+    fn push_bits(&self, out: &mut Vec<u32>) {
+        out.push(*self);
+    }
+}
+
+impl Bits for Vec2 {
+    fn push_bits(&self, out: &mut Vec<u32>) {
+        out.extend([self.x.to_bits(), self.y.to_bits()]);
+    }
+}
+
+impl Bits for Vec3 {
+    fn push_bits(&self, out: &mut Vec<u32>) {
+        out.extend([self.x.to_bits(), self.y.to_bits(), self.z.to_bits()]);
+    }
+}
+
+/// An 8-lane packet with a scalar twin type, split into and built from its lanes.
+///
+/// Implemented for [`F32x8`] (`f32`), [`U32x8`] (`u32`), [`Vec2x8`] (`glam::Vec2`), [`Vec3x8`]
+/// (`glam::Vec3`), and tuples of up to three packets (tuples of the scalars), which is how
+/// [`check_lanes`] takes several arguments or returns several values.
+pub trait Packet: Copy {
+    /// The type of one lane.
+    type Scalar: Copy + fmt::Debug + Bits;
+    /// The packet whose lane `i` is `lanes[i]`.
+    fn from_lanes(lanes: [Self::Scalar; 8]) -> Self;
+    /// The eight lanes.
+    fn to_lanes(self) -> [Self::Scalar; 8];
+}
+
+impl Packet for F32x8 {
+    type Scalar = f32;
+    fn from_lanes(lanes: [f32; 8]) -> Self {
+        F32x8::new(lanes)
+    }
+    fn to_lanes(self) -> [f32; 8] {
+        self.to_array()
+    }
+}
+
+impl Packet for U32x8 {
+    type Scalar = u32;
+    fn from_lanes(lanes: [u32; 8]) -> Self {
+        U32x8::new(lanes)
+    }
+    fn to_lanes(self) -> [u32; 8] {
+        self.to_array()
+    }
+}
+
+impl Packet for Vec2x8 {
+    type Scalar = Vec2;
+    fn from_lanes(lanes: [Vec2; 8]) -> Self {
+        Vec2x8::from(lanes)
+    }
+    fn to_lanes(self) -> [Vec2; 8] {
+        self.to_array()
+    }
+}
+
+impl Packet for Vec3x8 {
+    type Scalar = Vec3;
+    fn from_lanes(lanes: [Vec3; 8]) -> Self {
+        Vec3x8::from(lanes)
+    }
+    fn to_lanes(self) -> [Vec3; 8] {
+        self.to_array()
+    }
+}
+
+macro_rules! tuple_impls {
+    ($(($($t:ident $i:tt),+))+) => {$(
+        impl<$($t: Bits),+> Bits for ($($t,)+) {
+            fn push_bits(&self, out: &mut Vec<u32>) {
+                $(self.$i.push_bits(out);)+
+            }
+        }
+
+        impl<$($t: Packet),+> Packet for ($($t,)+) {
+            type Scalar = ($($t::Scalar,)+);
+            fn from_lanes(lanes: [Self::Scalar; 8]) -> Self {
+                ($($t::from_lanes(lanes.map(|l| l.$i)),)+)
+            }
+            fn to_lanes(self) -> [Self::Scalar; 8] {
+                let split = ($(self.$i.to_lanes(),)+);
+                core::array::from_fn(|k| ($(split.$i[k],)+))
+            }
+        }
+    )+};
+}
+
+tuple_impls! {
+    (A 0)
+    (A 0, B 1)
+    (A 0, B 1, C 2)
+}
+
+/// The first lane where a packet function and its scalar twin disagree, returned by
+/// [`check_lanes`]. Its `Display` prints everything below.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LaneMismatch {
+    /// Index into the inputs of the first mismatching lane's input.
+    pub index: usize,
+    /// Lane of the packet in which it was evaluated (`index % 8`).
+    pub lane: usize,
+    /// The input, Debug-formatted.
+    pub input: String,
+    /// The packet function's output in that lane, Debug-formatted.
+    pub packet: String,
+    /// The scalar function's output, Debug-formatted.
+    pub scalar: String,
+    /// Bit patterns of the packet output's components.
+    pub packet_bits: Vec<u32>,
+    /// Bit patterns of the scalar output's components.
+    pub scalar_bits: Vec<u32>,
+    /// How many lanes disagreed in total.
+    pub mismatches: usize,
+    /// How many lanes were compared.
+    pub checked: usize,
+}
+
+impl fmt::Display for LaneMismatch {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let hex = |b: &[u32]| {
+            b.iter()
+                .map(|w| format!("{w:#010x}"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        write!(
+            f,
+            "packet != scalar in {} of {} lanes; first at input {} (lane {}): input {}: \
+             packet {} [{}] vs scalar {} [{}]",
+            self.mismatches,
+            self.checked,
+            self.index,
+            self.lane,
+            self.input,
+            self.packet,
+            hex(&self.packet_bits),
+            self.scalar,
+            hex(&self.scalar_bits),
+        )
+    }
+}
+
+impl std::error::Error for LaneMismatch {}
+
+/// Check that lane *i* of `packet` equals `scalar` applied to lane *i*'s input, bit for bit, for
+/// every input.
+///
+/// The inputs are packed eight at a time in order (input `j` goes to lane `j % 8`); when their
+/// number is not a multiple of 8 the last packet is filled by repeating the inputs from the
+/// start, and those lanes are checked too. Outputs are compared through [`Bits`]: exact bit
+/// patterns, NaNs included (a NaN with another sign or payload is a mismatch; the crate's
+/// contract is bit equality, and its packet and scalar forms run the same operations).
+///
+/// Several arguments or results: use tuples, e.g. `I = (Vec2x8, F32x8)` with scalar input
+/// `(Vec2, f32)`. Annotate the closure arguments so that `I` can be inferred.
+///
+/// Returns the number of lanes compared (the number of inputs rounded up to a multiple of 8), or
+/// the first mismatch with the total count of mismatching lanes (boxed, as it is large).
+pub fn check_lanes<I, O, P, S>(
+    inputs: &[I::Scalar],
+    mut packet: P,
+    mut scalar: S,
+) -> Result<usize, Box<LaneMismatch>>
+where
+    I: Packet,
+    O: Packet,
+    P: FnMut(I) -> O,
+    S: FnMut(I::Scalar) -> O::Scalar,
+{
+    let n = inputs.len();
+    let chunks = n.div_ceil(8);
+    let checked = chunks * 8;
+    let mut first: Option<LaneMismatch> = None;
+    let mut mismatches = 0;
+    let (mut pb, mut sb) = (Vec::new(), Vec::new());
+    for c in 0..chunks {
+        let lanes: [I::Scalar; 8] = core::array::from_fn(|k| inputs[(c * 8 + k) % n]);
+        let out = packet(I::from_lanes(lanes)).to_lanes();
+        for (k, (&input, got)) in lanes.iter().zip(out).enumerate() {
+            let want = scalar(input);
+            pb.clear();
+            sb.clear();
+            got.push_bits(&mut pb);
+            want.push_bits(&mut sb);
+            if pb != sb {
+                mismatches += 1;
+                if first.is_none() {
+                    first = Some(LaneMismatch {
+                        index: (c * 8 + k) % n,
+                        lane: k,
+                        input: format!("{input:?}"),
+                        packet: format!("{got:?}"),
+                        scalar: format!("{want:?}"),
+                        packet_bits: pb.clone(),
+                        scalar_bits: sb.clone(),
+                        mismatches: 0,
+                        checked,
+                    });
+                }
+            }
+        }
+    }
+    match first {
+        None => Ok(checked),
+        Some(m) => Err(Box::new(LaneMismatch { mismatches, ..m })),
+    }
+}

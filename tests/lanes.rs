@@ -1,0 +1,430 @@
+//! Packet == scalar, bit for bit: every warp, pdf and inverse, and the frame, on 2¹⁶ random
+//! inputs mixed with the hard inputs (NaN, ±∞, 0, −0, 1, 1 − 2⁻²⁴, subnormals, huge values).
+//! Parameters and geometry differ from lane to lane, so one packet mixes code paths (spherical
+//! and area sampling, inside and outside a support).
+
+use glam::{Vec2, Vec3};
+use mcsample::frame::{self, Frame};
+use mcsample::verify::{Packet, check_lanes};
+use mcsample::warp::{self, ONE_MINUS_EPS};
+use mcsample::x8::{F32x8, Vec2x8, Vec3x8};
+use rand_core::Rng;
+use rand_pcg::Pcg32;
+
+const N: usize = 1 << 16;
+
+/// Three vertices (or a corner and two edges), scalar and packet.
+type Tri = (Vec3, Vec3, Vec3);
+type Tri8 = (Vec3x8, Vec3x8, Vec3x8);
+
+const HARD: [f32; 16] = [
+    0.0,
+    -0.0,
+    1.0,
+    ONE_MINUS_EPS,
+    0.5,
+    1e-8,
+    -1.0,
+    2.0,
+    f32::NAN,
+    f32::INFINITY,
+    f32::NEG_INFINITY,
+    1e-40,
+    f32::MAX,
+    f32::MIN_POSITIVE,
+    0.25,
+    0.75,
+];
+
+struct Gen(Pcg32);
+
+impl Gen {
+    fn new(seed: u64) -> Self {
+        Gen(Pcg32::new(seed, 0x5851_f42d_4c95_7f2d))
+    }
+    fn unit(&mut self) -> f32 {
+        (self.0.next_u32() >> 8) as f32 * (1.0 / 16_777_216.0)
+    }
+    /// Mostly in [0, 1), one time in eight a hard value.
+    fn u1(&mut self) -> f32 {
+        if self.0.next_u32().is_multiple_of(8) {
+            HARD[(self.0.next_u32() % 16) as usize]
+        } else {
+            self.unit()
+        }
+    }
+    fn u2(&mut self) -> Vec2 {
+        Vec2::new(self.u1(), self.u1())
+    }
+    /// Log-uniform in [lo, hi], sometimes a hard value.
+    fn param(&mut self, lo: f32, hi: f32) -> f32 {
+        if self.0.next_u32().is_multiple_of(8) {
+            HARD[(self.0.next_u32() % 16) as usize]
+        } else {
+            lo * (hi / lo).powf(self.unit())
+        }
+    }
+    fn dir(&mut self) -> Vec3 {
+        let z = 1.0 - 2.0 * self.unit();
+        let r = (1.0 - z * z).max(0.0).sqrt();
+        let phi = std::f32::consts::TAU * self.unit();
+        Vec3::new(r * phi.cos(), r * phi.sin(), z)
+    }
+    /// Mostly unit directions, sometimes a hard component.
+    fn w(&mut self) -> Vec3 {
+        let mut w = self.dir();
+        if self.0.next_u32().is_multiple_of(8) {
+            w[(self.0.next_u32() % 3) as usize] = HARD[(self.0.next_u32() % 16) as usize];
+        }
+        w
+    }
+    /// Triangles of every size: far and tiny, near and huge, degenerate, with hard components.
+    fn triangle(&mut self) -> Tri {
+        let centre = self.dir() * self.param(1e-2, 1e3);
+        let size = self.param(1e-6, 1e2);
+        let mut v = [
+            centre + self.dir() * size,
+            centre + self.dir() * size,
+            centre + self.dir() * size,
+        ];
+        match self.0.next_u32() % 16 {
+            0 => v[1] = v[0],
+            1 => v[2] = v[0] * 2.0,
+            2 => v[(self.0.next_u32() % 3) as usize].x = HARD[(self.0.next_u32() % 16) as usize],
+            _ => {}
+        }
+        (v[0], v[1], v[2])
+    }
+    /// Rectangles (orthogonal edges) of every size, including edge-on ones.
+    fn rectangle(&mut self) -> Tri {
+        let corner = self.dir() * self.param(1e-2, 1e3);
+        let f = Frame::from_normal(self.dir());
+        let mut ex = f.t * self.param(1e-5, 1e2);
+        let ey = f.b * self.param(1e-5, 1e2);
+        match self.0.next_u32() % 16 {
+            // Edge-on: the shading point lies in the rectangle's plane.
+            0 => return (ex * 0.3 + ey * -0.2, ex, ey),
+            1 => ex = Vec3::ZERO,
+            _ => {}
+        }
+        (corner, ex, ey)
+    }
+}
+
+fn run<I: Packet, O: Packet>(
+    failures: &mut Vec<String>,
+    name: &str,
+    inputs: &[I::Scalar],
+    packet: impl FnMut(I) -> O,
+    scalar: impl FnMut(I::Scalar) -> O::Scalar,
+) {
+    match check_lanes(inputs, packet, scalar) {
+        Ok(n) => assert!(n >= inputs.len()),
+        Err(m) => failures.push(format!("{name}: {m}")),
+    }
+}
+
+#[test]
+fn every_warp_matches_its_scalar_twin_bit_for_bit() {
+    let mut g = Gen::new(7);
+    let us: Vec<Vec2> = (0..N).map(|_| g.u2()).collect();
+    let xs: Vec<f32> = (0..N).map(|_| g.u1()).collect();
+    let ws: Vec<Vec3> = (0..N).map(|_| g.w()).collect();
+    let mut f = Vec::new();
+    let f = &mut f;
+
+    run(
+        f,
+        "concentric_disk",
+        &us,
+        warp::x8::concentric_disk,
+        warp::concentric_disk,
+    );
+    run(
+        f,
+        "concentric_disk_inverse",
+        &us,
+        warp::x8::concentric_disk_inverse,
+        warp::concentric_disk_inverse,
+    );
+    run(f, "polar_disk", &us, warp::x8::polar_disk, warp::polar_disk);
+    run(
+        f,
+        "polar_disk_inverse",
+        &us,
+        warp::x8::polar_disk_inverse,
+        warp::polar_disk_inverse,
+    );
+    run(
+        f,
+        "uniform_hemisphere",
+        &us,
+        warp::x8::uniform_hemisphere,
+        warp::uniform_hemisphere,
+    );
+    run(
+        f,
+        "uniform_hemisphere_inverse",
+        &ws,
+        warp::x8::uniform_hemisphere_inverse,
+        warp::uniform_hemisphere_inverse,
+    );
+    run(
+        f,
+        "cosine_hemisphere",
+        &us,
+        warp::x8::cosine_hemisphere,
+        warp::cosine_hemisphere,
+    );
+    run(
+        f,
+        "cosine_hemisphere_pdf",
+        &xs,
+        warp::x8::cosine_hemisphere_pdf,
+        warp::cosine_hemisphere_pdf,
+    );
+    run(
+        f,
+        "cosine_hemisphere_inverse",
+        &ws,
+        warp::x8::cosine_hemisphere_inverse,
+        warp::cosine_hemisphere_inverse,
+    );
+    run(
+        f,
+        "uniform_sphere",
+        &us,
+        warp::x8::uniform_sphere,
+        warp::uniform_sphere,
+    );
+    run(
+        f,
+        "uniform_sphere_inverse",
+        &ws,
+        warp::x8::uniform_sphere_inverse,
+        warp::uniform_sphere_inverse,
+    );
+    run(
+        f,
+        "uniform_triangle",
+        &us,
+        warp::x8::uniform_triangle,
+        warp::uniform_triangle,
+    );
+    let bs: Vec<Vec3> = us.iter().map(|&u| warp::uniform_triangle(u)).collect();
+    run(
+        f,
+        "uniform_triangle_inverse",
+        &bs,
+        warp::x8::uniform_triangle_inverse,
+        warp::uniform_triangle_inverse,
+    );
+    run(
+        f,
+        "uniform_triangle_pdf",
+        &us,
+        warp::x8::uniform_triangle_pdf,
+        warp::uniform_triangle_pdf,
+    );
+    run(f, "tent", &xs, warp::x8::tent, warp::tent);
+    run(f, "tent_pdf", &xs, warp::x8::tent_pdf, warp::tent_pdf);
+    run(
+        f,
+        "tent_inverse",
+        &xs,
+        warp::x8::tent_inverse,
+        warp::tent_inverse,
+    );
+
+    let hs: Vec<f32> = (0..N).map(|_| g.param(1e-8, 2.0)).collect();
+    run(
+        f,
+        "cone_h_from_cos",
+        &xs,
+        warp::x8::cone_h_from_cos,
+        warp::cone_h_from_cos,
+    );
+    run(
+        f,
+        "cone_h_from_sin2",
+        &xs,
+        warp::x8::cone_h_from_sin2,
+        warp::cone_h_from_sin2,
+    );
+    run(
+        f,
+        "uniform_cone_pdf",
+        &hs,
+        warp::x8::uniform_cone_pdf,
+        warp::uniform_cone_pdf,
+    );
+    let uh: Vec<(Vec2, f32)> = us.iter().copied().zip(hs.iter().copied()).collect();
+    run(
+        f,
+        "uniform_cone",
+        &uh,
+        |(u, h): (Vec2x8, F32x8)| warp::x8::uniform_cone(u, h),
+        |(u, h): (Vec2, f32)| warp::uniform_cone(u, h),
+    );
+    let wh: Vec<(Vec3, f32)> = ws.iter().copied().zip(hs.iter().copied()).collect();
+    run(
+        f,
+        "uniform_cone_inverse",
+        &wh,
+        |(w, h): (Vec3x8, F32x8)| warp::x8::uniform_cone_inverse(w, h),
+        |(w, h): (Vec3, f32)| warp::uniform_cone_inverse(w, h),
+    );
+
+    let ns: Vec<f32> = (0..N).map(|_| g.param(1e-3, 1e7)).collect();
+    let un: Vec<(Vec2, f32)> = us.iter().copied().zip(ns.iter().copied()).collect();
+    run(
+        f,
+        "phong_lobe",
+        &un,
+        |(u, n): (Vec2x8, F32x8)| warp::x8::phong_lobe(u, n),
+        |(u, n): (Vec2, f32)| warp::phong_lobe(u, n),
+    );
+    let cn: Vec<(f32, f32)> = xs.iter().copied().zip(ns.iter().copied()).collect();
+    run(
+        f,
+        "phong_lobe_pdf",
+        &cn,
+        |(c, n): (F32x8, F32x8)| warp::x8::phong_lobe_pdf(c, n),
+        |(c, n): (f32, f32)| warp::phong_lobe_pdf(c, n),
+    );
+    let wn: Vec<(Vec3, f32)> = ws.iter().copied().zip(ns.iter().copied()).collect();
+    run(
+        f,
+        "phong_lobe_inverse",
+        &wn,
+        |(w, n): (Vec3x8, F32x8)| warp::x8::phong_lobe_inverse(w, n),
+        |(w, n): (Vec3, f32)| warp::phong_lobe_inverse(w, n),
+    );
+
+    // Spherical polygons: a different triangle in every lane. Directions are drawn towards the
+    // polygon half of the time, so inside and outside both occur.
+    let tris: Vec<Tri> = (0..N).map(|_| g.triangle()).collect();
+    let st: Vec<(Vec2, Tri)> =
+        us.iter().copied().zip(tris.iter().copied()).collect();
+    run(
+        f,
+        "spherical_triangle",
+        &st,
+        |(u, (a, b, c)): (Vec2x8, Tri8)| {
+            warp::x8::spherical_triangle(u, a, b, c)
+        },
+        |(u, (a, b, c)): (Vec2, Tri)| warp::spherical_triangle(u, a, b, c),
+    );
+    let tw: Vec<(Vec3, Tri)> = st
+        .iter()
+        .zip(&ws)
+        .map(|(&(u, (a, b, c)), &w)| {
+            let toward = warp::spherical_triangle(u, a, b, c).0;
+            (if g.0.next_u32().is_multiple_of(2) { toward } else { w }, (a, b, c))
+        })
+        .collect();
+    run(
+        f,
+        "spherical_triangle_pdf",
+        &tw,
+        |(w, (a, b, c)): (Vec3x8, Tri8)| {
+            warp::x8::spherical_triangle_pdf(w, a, b, c)
+        },
+        |(w, (a, b, c)): (Vec3, Tri)| warp::spherical_triangle_pdf(w, a, b, c),
+    );
+    run(
+        f,
+        "spherical_triangle_inverse",
+        &tw,
+        |(w, (a, b, c)): (Vec3x8, Tri8)| {
+            warp::x8::spherical_triangle_inverse(w, a, b, c)
+        },
+        |(w, (a, b, c)): (Vec3, Tri)| warp::spherical_triangle_inverse(w, a, b, c),
+    );
+
+    let rects: Vec<Tri> = (0..N).map(|_| g.rectangle()).collect();
+    let sr: Vec<(Vec2, Tri)> =
+        us.iter().copied().zip(rects.iter().copied()).collect();
+    run(
+        f,
+        "spherical_rectangle",
+        &sr,
+        |(u, (s, ex, ey)): (Vec2x8, Tri8)| {
+            warp::x8::spherical_rectangle(u, s, ex, ey)
+        },
+        |(u, (s, ex, ey)): (Vec2, Tri)| warp::spherical_rectangle(u, s, ex, ey),
+    );
+    let rp: Vec<((Vec3, Vec3), Tri)> = sr
+        .iter()
+        .zip(&ws)
+        .map(|(&(u, (s, ex, ey)), &w)| {
+            let p = warp::spherical_rectangle(u, s, ex, ey).0;
+            let toward = p.normalize_or_zero();
+            (
+                (if g.0.next_u32().is_multiple_of(2) { toward } else { w }, p),
+                (s, ex, ey),
+            )
+        })
+        .collect();
+    run(
+        f,
+        "spherical_rectangle_pdf",
+        &rp,
+        |((w, _), (s, ex, ey)): ((Vec3x8, Vec3x8), Tri8)| {
+            warp::x8::spherical_rectangle_pdf(w, s, ex, ey)
+        },
+        |((w, _), (s, ex, ey)): ((Vec3, Vec3), Tri)| {
+            warp::spherical_rectangle_pdf(w, s, ex, ey)
+        },
+    );
+    run(
+        f,
+        "spherical_rectangle_inverse",
+        &rp,
+        |((_, p), (s, ex, ey)): ((Vec3x8, Vec3x8), Tri8)| {
+            warp::x8::spherical_rectangle_inverse(p, s, ex, ey)
+        },
+        |((_, p), (s, ex, ey)): ((Vec3, Vec3), Tri)| {
+            warp::spherical_rectangle_inverse(p, s, ex, ey)
+        },
+    );
+
+    // Frames: construction and both transforms.
+    let nv: Vec<(Vec3, Vec3)> = ws.iter().copied().zip(ws.iter().rev().copied()).collect();
+    run(
+        f,
+        "Frame",
+        &nv,
+        |(n, v): (Vec3x8, Vec3x8)| {
+            let fr = frame::x8::Frame::from_normal(n);
+            (fr.t, fr.b, (fr.to_local(v), fr.to_world(v)))
+        },
+        |(n, v): (Vec3, Vec3)| {
+            let fr = Frame::from_normal(n);
+            (fr.t, fr.b, (fr.to_local(v), fr.to_world(v)))
+        },
+    );
+
+    assert!(
+        f.is_empty(),
+        "{} functions differ between widths:\n{}",
+        f.len(),
+        f.join("\n")
+    );
+}
+
+/// The check itself must be able to fail: a packet function that is off by one ulp in one lane.
+#[test]
+fn negative_control_one_lane_off_by_one_ulp_is_caught() {
+    let mut g = Gen::new(11);
+    let us: Vec<Vec2> = (0..64).map(|_| Vec2::new(g.unit(), g.unit())).collect();
+    let broken = |u: Vec2x8| {
+        let mut p = warp::x8::concentric_disk(u);
+        let mut x = p.x.to_array();
+        x[5] = f32::from_bits(x[5].to_bits() ^ 1);
+        p.x = F32x8::new(x);
+        p
+    };
+    let err = check_lanes(&us, broken, warp::concentric_disk).unwrap_err();
+    assert_eq!(err.lane, 5);
+}

@@ -3,7 +3,7 @@
 //! Three instances exist:
 //!
 //! - `f32`: the scalar form that the glam-facing API uses;
-//! - [`F32x8`](crate::x8::F32x8): the 8-wide packet form;
+//! - [`F32x8`]: the 8-wide packet form;
 //! - `f64`: the reference instance. Its transcendental functions delegate to libm, so it measures
 //!   the error of the f32 polynomials rather than repeating it.
 //!

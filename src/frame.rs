@@ -71,7 +71,7 @@ impl Frame {
     }
 }
 
-/// The packet twin of [`Frame`](crate::frame::Frame): eight frames, one per lane.
+/// The packet twin of [`crate::frame::Frame`]: eight frames, one per lane.
 pub mod x8 {
     use super::*;
 

@@ -1,3 +1,5 @@
 //! STUB
 use crate::lane::Lane32;
-pub fn atan2<L: Lane32>(y: L, _x: L) -> L { y }
+pub fn atan2<L: Lane32>(y: L, _x: L) -> L {
+    y
+}

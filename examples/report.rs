@@ -328,8 +328,8 @@ fn catalogue<'a>() -> Vec<Warp<'a>> {
     };
     for (label, [a, b, c]) in [
         ("large", tri(1.0)),
-        ("small", tri(0.05)),
-        ("area", tri(0.01)),
+        ("small", tri(0.01)),
+        ("area", tri(1e-3)),
     ] {
         let (a8, b8, c8) = (Vec3x8::splat(a), Vec3x8::splat(b), Vec3x8::splat(c));
         let cap = Cap::around(&[a, b, c]);
@@ -362,8 +362,8 @@ fn catalogue<'a>() -> Vec<Warp<'a>> {
     };
     for (label, [s0, ex, ey]) in [
         ("large", rect(1.0)),
-        ("small", rect(0.05)),
-        ("area", rect(0.01)),
+        ("small", rect(0.2)),
+        ("area", rect(0.05)),
     ] {
         let (s8, ex8, ey8) = (Vec3x8::splat(s0), Vec3x8::splat(ex), Vec3x8::splat(ey));
         let cap = Cap::around(&[s0, s0 + ex, s0 + ey, s0 + ex + ey]);
@@ -438,6 +438,56 @@ fn measure(cfg: &Config, wp: &Warp, pts: &[Vec2], packets: &[Vec2x8], err_pts: &
         max_pdf_rel_err,
         chi2_p,
     }
+}
+
+/// Where spherical sampling breaks down: f32 Arvo and Ureña maps (no fallback) against their f64
+/// instances, for lights from 1e-8 sr to nearly a hemisphere. The error is the worst direction
+/// error over the light's angular size √Ω: a sample displaced by that fraction of the light.
+fn stability(quick: bool) -> Vec<(String, f64, f64, f64)> {
+    let pts = uniform_points(if quick { 1024 } else { 16384 }, 21);
+    let mut rows = Vec::new();
+    let sizes = [1e-4f32, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 100.0];
+    for &s in &sizes {
+        let tri: Vec<Vec3> = (0..3)
+            .map(|k| {
+                let t = std::f32::consts::TAU * k as f32 / 3.0 + 0.3;
+                Vec3::new(s * t.cos(), s * t.sin(), 1.0)
+            })
+            .collect();
+        let (a, b, c) = (tri[0], tri[1], tri[2]);
+        let omega = 1.0 / g::spherical_triangle_pdf::<f64>(
+            g::arvo_triangle::<f64>(V2::new(0.3, 0.3), d3(a), d3(b), d3(c)),
+            d3(a),
+            d3(b),
+            d3(c),
+        );
+        let mut worst = 0.0f64;
+        for &u in &pts {
+            let w32 = g::arvo_triangle::<f32>(u.into(), a.into(), b.into(), c.into());
+            let w64 = g::arvo_triangle::<f64>(d2(u.as_dvec2()), d3(a), d3(b), d3(c));
+            let e = (Vec3::from(w32).as_dvec3() - DVec3::from(w64)).length();
+            worst = if worse(e, worst) { e } else { worst };
+        }
+        rows.push((format!("triangle s={s}"), omega, worst, worst / omega.sqrt()));
+
+        let (corner, ex, ey) = (Vec3::new(-s / 2.0, -s / 2.0, 1.0), Vec3::new(s, 0.0, 0.0), Vec3::new(0.0, s, 0.0));
+        let omega = 1.0
+            / g::spherical_rectangle_pdf::<f64>(
+                V3::new(0.0, 0.0, 1.0),
+                d3(corner),
+                d3(ex),
+                d3(ey),
+            );
+        let mut worst = 0.0f64;
+        for &u in &pts {
+            let p32 = Vec3::from(g::urena_rectangle::<f32>(u.into(), corner.into(), ex.into(), ey.into()));
+            let p64 = DVec3::from(g::urena_rectangle::<f64>(d2(u.as_dvec2()), d3(corner), d3(ex), d3(ey)));
+            let e = (p32.as_dvec3().normalize() - p64.normalize()).length();
+            worst = if worse(e, worst) { e } else { worst };
+        }
+        rows.push((format!("rectangle s={s}"), omega, worst, worst / omega.sqrt()));
+    }
+    rows
 }
 
 fn cpu_name() -> String {
@@ -547,6 +597,12 @@ fn main() {
         );
         rows.push(r);
     }
+    println!("\nspherical sampling stability (f32 map vs its f64 instance, no area fallback):");
+    println!("{:<24} {:>12} {:>14} {:>14}", "light", "Ω (sr)", "max dir err", "err / √Ω");
+    let stab = stability(cfg.quick);
+    for (name, omega, err, rel) in &stab {
+        println!("{name:<24} {omega:>12.3e} {err:>14.2e} {rel:>14.2e}");
+    }
     let (copy_ns, cos_ns) = streaming(&cfg);
     println!(
         "\nstreaming ({} points): copy kernel {copy_ns:.3} ns/pt, x8 cosine_hemisphere {cos_ns:.3} ns/pt, ratio {:.2}",
@@ -599,6 +655,13 @@ fn main() {
                 num(r.chi2_p)
             )
             .unwrap();
+        }
+        s.push_str("], \"stability\": [");
+        for (i, (name, omega, err, rel)) in stab.iter().enumerate() {
+            if i > 0 {
+                s.push_str(", ");
+            }
+            write!(s, "{{\"light\": \"{}\", \"omega\": {}, \"max_dir_err\": {}, \"err_over_sqrt_omega\": {}}}", esc(name), num(*omega), num(*err), num(*rel)).unwrap();
         }
         s.push_str("]}\n");
         std::fs::write(path, s).expect("cannot write the JSON report");

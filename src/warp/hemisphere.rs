@@ -2,7 +2,7 @@
 
 use crate::lane::{Lane, V2, V3};
 use crate::warp::common::{azimuth_fraction, clamp_u, clamp01};
-use crate::warp::disk::{concentric_disk_inverse, concentric_with_radius};
+use crate::warp::disk::{concentric_disk_inverse, concentric_with_one_minus_r};
 
 /// Uniform hemisphere: z = u₀, r = √((1 − z)(1 + z)), φ = 2πu₁. The factored form keeps r
 /// accurate near the pole, where 1 − z² would cancel.
@@ -26,12 +26,12 @@ pub fn uniform_hemisphere_inverse<L: Lane>(w: V3<L>) -> V2<L> {
     V2::new(clamp01(w.z), azimuth_fraction(w.x, w.y)).canon()
 }
 
-/// Cosine hemisphere: the concentric disk lifted to the hemisphere, z = √((1 − r)(1 + r)) from
-/// the map's own radius r, which stays accurate at the rim.
+/// Cosine hemisphere: the concentric disk lifted to the hemisphere, z = √((1 − r)(1 + r)) with
+/// 1 − r exact from the map itself, which stays accurate at the rim.
 #[inline(always)]
 pub fn cosine_hemisphere<L: Lane>(u: V2<L>) -> V3<L> {
-    let (p, r) = concentric_with_radius(u);
-    let z = ((L::c(1.0) - r) * (L::c(1.0) + r)).max(L::c(0.0)).sqrt();
+    let (p, one_minus_r) = concentric_with_one_minus_r(u);
+    let z = (one_minus_r * (L::c(2.0) - one_minus_r)).max(L::c(0.0)).sqrt();
     V3::new(p.x, p.y, z).canon()
 }
 

@@ -41,7 +41,7 @@ pub mod x8;
 
 pub use common::ONE_MINUS_EPS;
 pub use phong::PHONG_N_MAX;
-pub use spherical_rectangle::SPHERICAL_RECTANGLE_MIN_SR;
+pub use spherical_rectangle::{SPHERICAL_RECTANGLE_MAX_SR, SPHERICAL_RECTANGLE_MIN_SR};
 pub use spherical_triangle::{SPHERICAL_TRIANGLE_MAX_SR, SPHERICAL_TRIANGLE_MIN_SR};
 
 /// The generic forms, for code that is itself generic over [`Lane`](crate::lane::Lane) (the f64
@@ -60,10 +60,10 @@ pub mod generic {
     pub use super::phong::{phong_lobe, phong_lobe_inverse, phong_lobe_pdf};
     pub use super::sphere::{uniform_sphere, uniform_sphere_inverse, uniform_sphere_pdf};
     pub use super::spherical_rectangle::{
-        spherical_rectangle, spherical_rectangle_inverse, spherical_rectangle_pdf,
+        spherical_rectangle, spherical_rectangle_inverse, spherical_rectangle_pdf, urena_rectangle,
     };
     pub use super::spherical_triangle::{
-        spherical_triangle, spherical_triangle_inverse, spherical_triangle_pdf,
+        arvo_triangle, spherical_triangle, spherical_triangle_inverse, spherical_triangle_pdf,
     };
     pub use super::tent::{tent, tent_inverse, tent_pdf};
     pub use super::triangle::{uniform_triangle, uniform_triangle_inverse, uniform_triangle_pdf};
@@ -274,8 +274,9 @@ pub fn spherical_triangle_inverse(w: Vec3, a: Vec3, b: Vec3, c: Vec3) -> Vec2 {
 /// per steradian.
 ///
 /// Ureña et al.'s map, uniform in solid angle (pdf 1/Ω, Ω by Van Oosterom–Strackee); below
-/// [`SPHERICAL_RECTANGLE_MIN_SR`] it samples by area and returns the exact converted pdf. Seen
-/// edge-on, or degenerate, the pdf is 0 and the point is `corner`. NaN u gives a pdf of 0.
+/// [`SPHERICAL_RECTANGLE_MIN_SR`] or above [`SPHERICAL_RECTANGLE_MAX_SR`] it samples by area
+/// and returns the exact converted pdf. Seen edge-on, or degenerate, the pdf is 0 and the point
+/// is `corner`. NaN u gives a pdf of 0.
 #[inline]
 pub fn spherical_rectangle(u: Vec2, corner: Vec3, ex: Vec3, ey: Vec3) -> (Vec3, f32) {
     let (w, pdf) = spherical_rectangle::spherical_rectangle::<f32>(

@@ -11,7 +11,7 @@
 use std::f64::consts::PI;
 
 use glam::{DVec2, DVec3, Vec2, Vec3};
-use mcsample::verify::{Cap, ChiSquare, ChiSquareResult, sidak_alpha};
+use mcsample::verify::{Cap, ChiSquare, ChiSquareResult, PlanarLight, sidak_alpha};
 use mcsample::warp;
 use rand_core::Rng;
 use rand_pcg::Pcg32;
@@ -35,51 +35,6 @@ fn cap_test(
     cap.test(ChiSquare::sphere().ires(ires), sample, |w: DVec3| {
         pdf(w.as_vec3()) as f64
     })
-}
-
-/// χ² of a spherical-polygon sampler on the polygon's own parameter square, where no edge of the
-/// support cuts a cell. A point of the plane is p0 + β·e1 + γ·e2; the rectangle is (β, γ) ∈ [0,1]²
-/// and the triangle β, γ ≥ 0, β + γ ≤ 1, mapped onto the square by (s, f) = ((β+γ)², γ/(β+γ)),
-/// which is equal-area. A density p_ω per steradian becomes p_ω·A·cos θ_l/d² on the square.
-fn polygon_test(
-    [p0, e1, e2]: [Vec3; 3],
-    triangle: bool,
-    mut sample: impl FnMut(usize) -> Vec3,
-    pdf: impl Fn(Vec3) -> f32,
-) -> ChiSquareResult {
-    let (p0, e1, e2) = (p0.as_dvec3(), e1.as_dvec3(), e2.as_dvec3());
-    let n = e1.cross(e2);
-    let area = if triangle { n.length() / 2.0 } else { n.length() };
-    let to_square = move |w: Vec3| {
-        let w = w.as_dvec3();
-        let x = w * (p0.dot(n) / w.dot(n)) - p0;
-        let beta = x.cross(e2).dot(n) / n.dot(n);
-        let gamma = e1.cross(x).dot(n) / n.dot(n);
-        if triangle {
-            let r = beta + gamma;
-            DVec2::new(r * r, if r > 0.0 { gamma / r } else { 0.0 })
-        } else {
-            DVec2::new(beta, gamma)
-        }
-    };
-    let from_square = move |st: DVec2| {
-        let (beta, gamma) = if triangle {
-            let r = st.x.sqrt();
-            (r * (1.0 - st.y), r * st.y)
-        } else {
-            (st.x, st.y)
-        };
-        p0 + beta * e1 + gamma * e2
-    };
-    ChiSquare::square().run(
-        move |i| to_square(sample(i)),
-        move |st: DVec2| {
-            let x = from_square(st);
-            let d2 = x.length_squared();
-            let cos_l = (x.dot(n) / (x.length() * n.length())).abs();
-            pdf(x.normalize().as_vec3()) as f64 * area * cos_l / d2
-        },
-    )
 }
 
 /// The spherical polygons under test: (name, vertices, zoom cap). Sizes: a large light (≈1 sr),
@@ -241,11 +196,10 @@ fn positive_cases() -> Vec<(String, ChiSquareResult)> {
         let mut u = u_seq(40 + k as u64);
         push(
             name,
-            polygon_test(
-                [a, b - a, c - a],
-                true,
+            PlanarLight::triangle(a, b, c).test(
+                ChiSquare::square(),
                 |i| warp::spherical_triangle(u(i), a, b, c).0,
-                |w| warp::spherical_triangle_pdf(w, a, b, c),
+                |w| warp::spherical_triangle_pdf(w.as_vec3(), a, b, c) as f64,
             ),
         );
     }
@@ -253,11 +207,10 @@ fn positive_cases() -> Vec<(String, ChiSquareResult)> {
         let mut u = u_seq(50 + k as u64);
         push(
             name,
-            polygon_test(
-                [s, ex, ey],
-                false,
-                |i| warp::spherical_rectangle(u(i), s, ex, ey).0.normalize(),
-                |w| warp::spherical_rectangle_pdf(w, s, ex, ey),
+            PlanarLight::parallelogram(s, ex, ey).test(
+                ChiSquare::square(),
+                |i| warp::spherical_rectangle(u(i), s, ex, ey).0,
+                |w| warp::spherical_rectangle_pdf(w.as_vec3(), s, ex, ey) as f64,
             ),
         );
     }
@@ -392,11 +345,10 @@ fn negative_controls_are_rejected() {
     let [a, b, c] = triangles()[0].1;
     let moved = c + (b - a) * 0.02;
     let mut u = u_seq(74);
-    let r = polygon_test(
-        [a, b - a, c - a],
-        true,
+    let r = PlanarLight::triangle(a, b, c).test(
+        ChiSquare::square(),
         |i| warp::spherical_triangle(u(i), a, b, c).0,
-        |w| warp::spherical_triangle_pdf(w, a, b, moved),
+        |w| warp::spherical_triangle_pdf(w.as_vec3(), a, b, moved) as f64,
     );
     assert!(
         !r.passes(threshold),
@@ -417,7 +369,10 @@ fn negative_controls_are_rejected() {
         },
         |_: DVec2| 1.0,
     );
-    assert!(!r.passes(threshold), "a non-uniform triangle map accepted: {r}");
+    assert!(
+        !r.passes(threshold),
+        "a non-uniform triangle map accepted: {r}"
+    );
 }
 
 /// ∫pdf = 1 over each warp's domain, by a midpoint rule on a fine equal-area grid of the cap

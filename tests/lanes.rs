@@ -304,15 +304,12 @@ fn every_warp_matches_its_scalar_twin_bit_for_bit() {
     // Spherical polygons: a different triangle in every lane. Directions are drawn towards the
     // polygon half of the time, so inside and outside both occur.
     let tris: Vec<Tri> = (0..N).map(|_| g.triangle()).collect();
-    let st: Vec<(Vec2, Tri)> =
-        us.iter().copied().zip(tris.iter().copied()).collect();
+    let st: Vec<(Vec2, Tri)> = us.iter().copied().zip(tris.iter().copied()).collect();
     run(
         f,
         "spherical_triangle",
         &st,
-        |(u, (a, b, c)): (Vec2x8, Tri8)| {
-            warp::x8::spherical_triangle(u, a, b, c)
-        },
+        |(u, (a, b, c)): (Vec2x8, Tri8)| warp::x8::spherical_triangle(u, a, b, c),
         |(u, (a, b, c)): (Vec2, Tri)| warp::spherical_triangle(u, a, b, c),
     );
     let tw: Vec<(Vec3, Tri)> = st
@@ -320,38 +317,38 @@ fn every_warp_matches_its_scalar_twin_bit_for_bit() {
         .zip(&ws)
         .map(|(&(u, (a, b, c)), &w)| {
             let toward = warp::spherical_triangle(u, a, b, c).0;
-            (if g.0.next_u32().is_multiple_of(2) { toward } else { w }, (a, b, c))
+            (
+                if g.0.next_u32().is_multiple_of(2) {
+                    toward
+                } else {
+                    w
+                },
+                (a, b, c),
+            )
         })
         .collect();
     run(
         f,
         "spherical_triangle_pdf",
         &tw,
-        |(w, (a, b, c)): (Vec3x8, Tri8)| {
-            warp::x8::spherical_triangle_pdf(w, a, b, c)
-        },
+        |(w, (a, b, c)): (Vec3x8, Tri8)| warp::x8::spherical_triangle_pdf(w, a, b, c),
         |(w, (a, b, c)): (Vec3, Tri)| warp::spherical_triangle_pdf(w, a, b, c),
     );
     run(
         f,
         "spherical_triangle_inverse",
         &tw,
-        |(w, (a, b, c)): (Vec3x8, Tri8)| {
-            warp::x8::spherical_triangle_inverse(w, a, b, c)
-        },
+        |(w, (a, b, c)): (Vec3x8, Tri8)| warp::x8::spherical_triangle_inverse(w, a, b, c),
         |(w, (a, b, c)): (Vec3, Tri)| warp::spherical_triangle_inverse(w, a, b, c),
     );
 
     let rects: Vec<Tri> = (0..N).map(|_| g.rectangle()).collect();
-    let sr: Vec<(Vec2, Tri)> =
-        us.iter().copied().zip(rects.iter().copied()).collect();
+    let sr: Vec<(Vec2, Tri)> = us.iter().copied().zip(rects.iter().copied()).collect();
     run(
         f,
         "spherical_rectangle",
         &sr,
-        |(u, (s, ex, ey)): (Vec2x8, Tri8)| {
-            warp::x8::spherical_rectangle(u, s, ex, ey)
-        },
+        |(u, (s, ex, ey)): (Vec2x8, Tri8)| warp::x8::spherical_rectangle(u, s, ex, ey),
         |(u, (s, ex, ey)): (Vec2, Tri)| warp::spherical_rectangle(u, s, ex, ey),
     );
     let rp: Vec<((Vec3, Vec3), Tri)> = sr
@@ -361,7 +358,14 @@ fn every_warp_matches_its_scalar_twin_bit_for_bit() {
             let p = warp::spherical_rectangle(u, s, ex, ey).0;
             let toward = p.normalize_or_zero();
             (
-                (if g.0.next_u32().is_multiple_of(2) { toward } else { w }, p),
+                (
+                    if g.0.next_u32().is_multiple_of(2) {
+                        toward
+                    } else {
+                        w
+                    },
+                    p,
+                ),
                 (s, ex, ey),
             )
         })
@@ -373,9 +377,7 @@ fn every_warp_matches_its_scalar_twin_bit_for_bit() {
         |((w, _), (s, ex, ey)): ((Vec3x8, Vec3x8), Tri8)| {
             warp::x8::spherical_rectangle_pdf(w, s, ex, ey)
         },
-        |((w, _), (s, ex, ey)): ((Vec3, Vec3), Tri)| {
-            warp::spherical_rectangle_pdf(w, s, ex, ey)
-        },
+        |((w, _), (s, ex, ey)): ((Vec3, Vec3), Tri)| warp::spherical_rectangle_pdf(w, s, ex, ey),
     );
     run(
         f,

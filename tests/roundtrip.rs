@@ -129,7 +129,10 @@ fn inverses_recover_u() {
         (3e-7, 3e-7),
         &|u| {
             let w = warp::uniform_hemisphere(u);
-            (warp::uniform_hemisphere_inverse(w), [true, u.x < 1.0 - 1e-6])
+            (
+                warp::uniform_hemisphere_inverse(w),
+                [true, u.x < 1.0 - 1e-6],
+            )
         },
         true,
     );
@@ -202,7 +205,10 @@ fn inverses_recover_u() {
             bound,
             &|u| {
                 let (w, _) = warp::spherical_triangle(u, a, b, c);
-                (warp::spherical_triangle_inverse(w, a, b, c), [u.y > 1e-3, true])
+                (
+                    warp::spherical_triangle_inverse(w, a, b, c),
+                    [u.y > 1e-3, true],
+                )
             },
             false,
         );
@@ -219,7 +225,10 @@ fn inverses_recover_u() {
             bound,
             &|u| {
                 let (p, _) = warp::spherical_rectangle(u, s, ex, ey);
-                (warp::spherical_rectangle_inverse(p, s, ex, ey), [true, true])
+                (
+                    warp::spherical_rectangle_inverse(p, s, ex, ey),
+                    [true, true],
+                )
             },
             false,
         );
@@ -243,5 +252,6 @@ fn inverses_recover_u() {
 
 /// True when `e` is a new worst error; NaN always is, so it cannot hide.
 fn worse<T: PartialOrd>(e: T, current: T) -> bool {
-    e.partial_cmp(&current) != Some(std::cmp::Ordering::Less) && e.partial_cmp(&current) != Some(std::cmp::Ordering::Equal)
+    e.partial_cmp(&current) != Some(std::cmp::Ordering::Less)
+        && e.partial_cmp(&current) != Some(std::cmp::Ordering::Equal)
 }

@@ -27,6 +27,10 @@
 //! the test fail with p = 0 (the counts are in [`ChiSquareResult`], and its `Display` says what
 //! went wrong). [`ChiSquareResult::pdf_integral`] reports ∫ pdf, which should be 1.
 //!
+//! Two adapters make hard cases testable: [`Cap`] zooms a narrow lobe or a small light onto the
+//! whole sphere, and [`PlanarLight`] moves directions towards a triangle or parallelogram onto
+//! the light's own parameter square, so that no support edge cuts a cell.
+//!
 //! # Lane equality
 //!
 //! [`check_lanes`] runs a packet function on inputs packed eight at a time and its scalar twin on
@@ -92,8 +96,10 @@ mod cap;
 mod chi2;
 mod gamma;
 mod lanes;
+mod planar;
 
 pub use cap::Cap;
 pub use chi2::{ChiSquare, ChiSquareResult, Disk, Domain, ExpectedCounts, Sphere, Square};
 pub use gamma::{chi2_sf, gamma_p, gamma_q, ln_gamma, sidak_alpha};
 pub use lanes::{Bits, LaneMismatch, Packet, check_lanes};
+pub use planar::PlanarLight;

@@ -31,7 +31,9 @@ pub fn uniform_hemisphere_inverse<L: Lane>(w: V3<L>) -> V2<L> {
 #[inline(always)]
 pub fn cosine_hemisphere<L: Lane>(u: V2<L>) -> V3<L> {
     let (p, one_minus_r) = concentric_with_one_minus_r(u);
-    let z = (one_minus_r * (L::c(2.0) - one_minus_r)).max(L::c(0.0)).sqrt();
+    let z = (one_minus_r * (L::c(2.0) - one_minus_r))
+        .max(L::c(0.0))
+        .sqrt();
     V3::new(p.x, p.y, z).canon()
 }
 

@@ -137,7 +137,9 @@ fn arvo<L: Lane>(s: &Setup<L>, u: V2<L>) -> V3<L> {
     let d = c_hat - s.ub;
     let one_minus_z = u.y * (L::c(0.5) * d.dot(d));
     let z = L::c(1.0) - one_minus_z;
-    let sin_z = (one_minus_z * (L::c(2.0) - one_minus_z)).max(L::c(0.0)).sqrt();
+    let sin_z = (one_minus_z * (L::c(2.0) - one_minus_z))
+        .max(L::c(0.0))
+        .sqrt();
     s.ub.scale(z) + ortho(c_hat, s.ub).scale(sin_z)
 }
 

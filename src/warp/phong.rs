@@ -28,12 +28,13 @@ pub fn phong_lobe<L: Lane>(u: V2<L>, n: L) -> V3<L> {
 }
 
 /// (n+1)/(2π)·exp(n·ln cos α) for cos α > 0, else 0 (the horizon is outside the support, which
-/// makes n = 0 agree with the open hemisphere). NaN gives 0.
+/// makes n = 0 agree with the open hemisphere). NaN gives 0. cos α above 1, which rounding can
+/// produce from a slightly long vector, counts as 1.
 #[inline(always)]
 pub fn phong_lobe_pdf<L: Lane>(cos_alpha: L, n: L) -> L {
     let n = clamp_n(n);
     let norm = (n + L::c(1.0)) * L::c(0.5 * core::f64::consts::FRAC_1_PI);
-    let p = norm * (n * cos_alpha.ln()).exp();
+    let p = norm * (n * cos_alpha.min(L::c(1.0)).ln()).exp();
     L::select(cos_alpha.gt(L::c(0.0)) & n.eq(n), p, L::c(0.0))
 }
 

@@ -12,7 +12,7 @@ use std::time::Instant;
 
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use mcsample::lane::{V2, V3};
-use mcsample::verify::{Cap, ChiSquare, PlanarLight};
+use mcsample::verify::{Cap, ChiSquare, PlanarLight, square_to_triangle, triangle_to_square};
 use mcsample::warp::{self, generic as g};
 use mcsample::x8::{F32x8, Vec2x8, Vec3x8};
 use rand_core::Rng;
@@ -305,13 +305,10 @@ fn catalogue<'a>() -> Vec<Warp<'a>> {
                 .run(
                     |i| {
                         let b = warp::uniform_triangle(u(i)).as_dvec3();
-                        let r = b.x + b.y;
-                        DVec2::new(r * r, if r > 0.0 { b.y / r } else { 0.0 })
+                        triangle_to_square(b.x, b.y)
                     },
                     |st: DVec2| {
-                        let r = st.x.sqrt();
-                        let b = DVec2::new(r * (1.0 - st.y), r * st.y);
-                        0.5 * warp::uniform_triangle_pdf(b.as_vec2()) as f64
+                        0.5 * warp::uniform_triangle_pdf(square_to_triangle(st).as_vec2()) as f64
                     },
                 )
                 .p_value
@@ -320,7 +317,9 @@ fn catalogue<'a>() -> Vec<Warp<'a>> {
     w.push(Warp {
         name: "tent".into(),
         s: Form::new(|u: Vec2| Vec3::new(warp::tent(u.x), warp::tent(u.y), 0.0)),
-        p: Form::new(|u: Vec2x8| Vec3x8::new(warp::x8::tent(u.x), warp::x8::tent(u.y), F32x8::ZERO)),
+        p: Form::new(|u: Vec2x8| {
+            Vec3x8::new(warp::x8::tent(u.x), warp::x8::tent(u.y), F32x8::ZERO)
+        }),
         r: Box::new(|u| DVec3::new(g::tent(u.x), g::tent(u.y), 0.0)),
         pdf_s: Box::new(|x| warp::tent_pdf(x.x) * warp::tent_pdf(x.y)),
         pdf_r: Box::new(|x| g::tent_pdf(x.x) * g::tent_pdf(x.y)),

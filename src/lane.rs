@@ -164,6 +164,53 @@ pub trait Lane32: Lane {
     fn shr(u: Self::U, n: u32) -> Self::U;
 }
 
+/// The math methods of the f32 and F32x8 lanes: both run the crate's own generic polynomials,
+/// which is what makes their results agree bit for bit.
+macro_rules! own_math {
+    () => {
+        #[inline(always)]
+        fn sin_cos(self) -> (Self, Self) {
+            crate::math::trig::sin_cos(self)
+        }
+        #[inline(always)]
+        fn sincos_2pi(self) -> (Self, Self) {
+            crate::math::trig::sincos_2pi(self)
+        }
+        #[inline(always)]
+        fn sincos_pi4(self) -> (Self, Self) {
+            crate::math::trig::sincos_pi4(self)
+        }
+        #[inline(always)]
+        fn atan2(self, x: Self) -> Self {
+            crate::math::atan::atan2(self, x)
+        }
+        #[inline(always)]
+        fn asin(self) -> Self {
+            crate::math::asin::asin(self)
+        }
+        #[inline(always)]
+        fn acos(self) -> Self {
+            crate::math::asin::acos(self)
+        }
+        #[inline(always)]
+        fn ln(self) -> Self {
+            crate::math::log::ln(self)
+        }
+        #[inline(always)]
+        fn exp(self) -> Self {
+            crate::math::exp::exp(self)
+        }
+        #[inline(always)]
+        fn ln_1p(self) -> Self {
+            crate::math::log::ln_1p(self)
+        }
+        #[inline(always)]
+        fn exp_m1(self) -> Self {
+            crate::math::exp::exp_m1(self)
+        }
+    };
+}
+
 // ---------------------------------------------------------------------------------------------
 // f32
 
@@ -223,46 +270,7 @@ impl Lane for f32 {
     fn select(m: bool, a: Self, b: Self) -> Self {
         if m { a } else { b }
     }
-    #[inline(always)]
-    fn sin_cos(self) -> (Self, Self) {
-        crate::math::trig::sin_cos(self)
-    }
-    #[inline(always)]
-    fn sincos_2pi(self) -> (Self, Self) {
-        crate::math::trig::sincos_2pi(self)
-    }
-    #[inline(always)]
-    fn sincos_pi4(self) -> (Self, Self) {
-        crate::math::trig::sincos_pi4(self)
-    }
-    #[inline(always)]
-    fn atan2(self, x: Self) -> Self {
-        crate::math::atan::atan2(self, x)
-    }
-    #[inline(always)]
-    fn asin(self) -> Self {
-        crate::math::asin::asin(self)
-    }
-    #[inline(always)]
-    fn acos(self) -> Self {
-        crate::math::asin::acos(self)
-    }
-    #[inline(always)]
-    fn ln(self) -> Self {
-        crate::math::log::ln(self)
-    }
-    #[inline(always)]
-    fn exp(self) -> Self {
-        crate::math::exp::exp(self)
-    }
-    #[inline(always)]
-    fn ln_1p(self) -> Self {
-        crate::math::log::ln_1p(self)
-    }
-    #[inline(always)]
-    fn exp_m1(self) -> Self {
-        crate::math::exp::exp_m1(self)
-    }
+    own_math!();
 }
 
 impl Lane32 for f32 {
@@ -342,46 +350,7 @@ impl Lane for F32x8 {
     fn select(m: F32x8, a: Self, b: Self) -> Self {
         m.select(a, b)
     }
-    #[inline(always)]
-    fn sin_cos(self) -> (Self, Self) {
-        crate::math::trig::sin_cos(self)
-    }
-    #[inline(always)]
-    fn sincos_2pi(self) -> (Self, Self) {
-        crate::math::trig::sincos_2pi(self)
-    }
-    #[inline(always)]
-    fn sincos_pi4(self) -> (Self, Self) {
-        crate::math::trig::sincos_pi4(self)
-    }
-    #[inline(always)]
-    fn atan2(self, x: Self) -> Self {
-        crate::math::atan::atan2(self, x)
-    }
-    #[inline(always)]
-    fn asin(self) -> Self {
-        crate::math::asin::asin(self)
-    }
-    #[inline(always)]
-    fn acos(self) -> Self {
-        crate::math::asin::acos(self)
-    }
-    #[inline(always)]
-    fn ln(self) -> Self {
-        crate::math::log::ln(self)
-    }
-    #[inline(always)]
-    fn exp(self) -> Self {
-        crate::math::exp::exp(self)
-    }
-    #[inline(always)]
-    fn ln_1p(self) -> Self {
-        crate::math::log::ln_1p(self)
-    }
-    #[inline(always)]
-    fn exp_m1(self) -> Self {
-        crate::math::exp::exp_m1(self)
-    }
+    own_math!();
 }
 
 impl Lane32 for F32x8 {

@@ -11,7 +11,10 @@
 use std::f64::consts::PI;
 
 use glam::{DVec2, DVec3, Vec2, Vec3};
-use mcsample::verify::{Cap, ChiSquare, ChiSquareResult, PlanarLight, sidak_alpha};
+use mcsample::verify::{
+    Cap, ChiSquare, ChiSquareResult, PlanarLight, sidak_alpha, square_to_triangle,
+    triangle_to_square,
+};
 use mcsample::warp;
 use rand_core::Rng;
 use rand_pcg::Pcg32;
@@ -163,14 +166,9 @@ fn positive_cases() -> Vec<(String, ChiSquareResult)> {
         ChiSquare::square().run(
             |i| {
                 let b = warp::uniform_triangle(u(i)).as_dvec3();
-                let r = b.x + b.y;
-                DVec2::new(r * r, if r > 0.0 { b.y / r } else { 0.0 })
+                triangle_to_square(b.x, b.y)
             },
-            |st: DVec2| {
-                let r = st.x.sqrt();
-                let b = DVec2::new(r * (1.0 - st.y), r * st.y);
-                0.5 * warp::uniform_triangle_pdf(b.as_vec2()) as f64
-            },
+            |st: DVec2| 0.5 * warp::uniform_triangle_pdf(square_to_triangle(st).as_vec2()) as f64,
         ),
     );
     // Two independent tents, as a 2D density (1 − |x|)(1 − |y|) on [−1, 1]², scaled to the square.
@@ -364,8 +362,7 @@ fn negative_controls_are_rejected() {
             let r = (v.x as f64).sqrt();
             let (b0, b1) = (1.0 - r, r * v.y as f64);
             let (b0, b1) = if v.x > 0.5 { (b1, b0) } else { (b0, b1) };
-            let sum = b0 + b1;
-            DVec2::new(sum * sum, if sum > 0.0 { b1 / sum } else { 0.0 })
+            triangle_to_square(b0, b1)
         },
         |_: DVec2| 1.0,
     );

@@ -102,4 +102,4 @@ pub use cap::Cap;
 pub use chi2::{ChiSquare, ChiSquareResult, Disk, Domain, ExpectedCounts, Sphere, Square};
 pub use gamma::{chi2_sf, gamma_p, gamma_q, ln_gamma, sidak_alpha};
 pub use lanes::{Bits, LaneMismatch, Packet, check_lanes};
-pub use planar::PlanarLight;
+pub use planar::{PlanarLight, square_to_triangle, triangle_to_square};

@@ -4,6 +4,20 @@ use glam::{DVec2, DVec3, Vec3};
 
 use super::chi2::{ChiSquare, ChiSquareResult, Square};
 
+/// Barycentric-style coordinates (β, γ) of a triangle (β, γ ≥ 0, β + γ ≤ 1) → the unit square,
+/// by the equal-area map ((β+γ)², γ/(β+γ)): the triangle's three edges become the square's
+/// boundary, and a density on the triangle becomes half of it on the square.
+pub fn triangle_to_square(beta: f64, gamma: f64) -> DVec2 {
+    let r = beta + gamma;
+    DVec2::new(r * r, if r > 0.0 { gamma / r } else { 0.0 })
+}
+
+/// The inverse of [`triangle_to_square`]: a point of the unit square → (β, γ).
+pub fn square_to_triangle(st: DVec2) -> DVec2 {
+    let r = st.x.sqrt();
+    DVec2::new(r * (1.0 - st.y), r * st.y)
+}
+
 /// A planar light seen from the origin: a triangle or a parallelogram, for testing a sampler of
 /// directions towards it with [`ChiSquare`].
 ///
@@ -59,8 +73,7 @@ impl PlanarLight {
         let beta = x.cross(self.e2).dot(n) / n.dot(n);
         let gamma = self.e1.cross(x).dot(n) / n.dot(n);
         if self.triangle {
-            let r = beta + gamma;
-            DVec2::new(r * r, if r > 0.0 { gamma / r } else { 0.0 })
+            triangle_to_square(beta, gamma)
         } else {
             DVec2::new(beta, gamma)
         }
@@ -68,13 +81,12 @@ impl PlanarLight {
 
     /// The point of the light at parameter-square point `st`.
     pub fn from_square(&self, st: DVec2) -> DVec3 {
-        let (beta, gamma) = if self.triangle {
-            let r = st.x.sqrt();
-            (r * (1.0 - st.y), r * st.y)
+        let bg = if self.triangle {
+            square_to_triangle(st)
         } else {
-            (st.x, st.y)
+            st
         };
-        self.p0 + beta * self.e1 + gamma * self.e2
+        self.p0 + bg.x * self.e1 + bg.y * self.e2
     }
 
     /// Runs `config` on the samples' parameter-square points against the transformed pdf.

@@ -21,7 +21,12 @@
 use core::fmt::Debug;
 use core::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
 
-use crate::x8::{F32x8, U32x8};
+/// Eight f32 lanes (`wide::f32x8`): the packet lane. Masks are `F32x8` values with all bits set
+/// or clear. Re-exported as [`crate::x8::F32x8`].
+pub type F32x8 = wide::f32x8;
+/// Eight u32 lanes (`wide::u32x8`), the bits of an [`F32x8`]. Re-exported as
+/// [`crate::x8::U32x8`].
+pub type U32x8 = wide::u32x8;
 
 /// A lane-wise boolean: `bool` for scalar lanes, an all-ones/all-zeros bit pattern for packets.
 pub trait Mask: Copy + BitAnd<Output = Self> + BitOr<Output = Self> + Not<Output = Self> {

@@ -6,11 +6,7 @@
 use glam::{Vec2, Vec3};
 
 use crate::lane::{V2, V3};
-
-/// Eight f32 lanes (`wide::f32x8`). Masks are `F32x8` values with all bits set or clear.
-pub type F32x8 = wide::f32x8;
-/// Eight u32 lanes (`wide::u32x8`).
-pub type U32x8 = wide::u32x8;
+pub use crate::lane::{F32x8, U32x8};
 /// Eight 2D vectors, one per lane.
 pub type Vec2x8 = V2<F32x8>;
 /// Eight 3D vectors, one per lane.

@@ -509,6 +509,21 @@ impl<L: Lane> V2<L> {
     pub fn canon(self) -> Self {
         Self::new(self.x.canon(), self.y.canon())
     }
+    /// True where any component is NaN.
+    #[inline(always)]
+    pub fn any_nan(self) -> L::Mask {
+        self.x.is_nan() | self.y.is_nan()
+    }
+    /// Every component the canonical NaN where `m` is set or the component is NaN: how a warp
+    /// makes NaN input give NaN in every coordinate, not just in those the NaN reached.
+    #[inline(always)]
+    pub fn nan_where(self, m: L::Mask) -> Self {
+        let nan = L::c(f64::NAN);
+        Self::new(
+            L::select(m | self.x.is_nan(), nan, self.x),
+            L::select(m | self.y.is_nan(), nan, self.y),
+        )
+    }
 }
 
 impl<L: Lane> V3<L> {
@@ -565,6 +580,22 @@ impl<L: Lane> V3<L> {
     #[inline(always)]
     pub fn canon(self) -> Self {
         Self::new(self.x.canon(), self.y.canon(), self.z.canon())
+    }
+    /// True where any component is NaN.
+    #[inline(always)]
+    pub fn any_nan(self) -> L::Mask {
+        self.x.is_nan() | self.y.is_nan() | self.z.is_nan()
+    }
+    /// Every component the canonical NaN where `m` is set or the component is NaN (see
+    /// [`V2::nan_where`]).
+    #[inline(always)]
+    pub fn nan_where(self, m: L::Mask) -> Self {
+        let nan = L::c(f64::NAN);
+        Self::new(
+            L::select(m | self.x.is_nan(), nan, self.x),
+            L::select(m | self.y.is_nan(), nan, self.y),
+            L::select(m | self.z.is_nan(), nan, self.z),
+        )
     }
 }
 

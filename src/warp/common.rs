@@ -25,7 +25,8 @@ pub(crate) fn clamp01<L: Lane>(x: L) -> L {
 pub(crate) fn azimuth_fraction<L: Lane>(x: L, y: L) -> L {
     let v = y.atan2(x) * L::c(1.0 / core::f64::consts::TAU);
     let v = L::select(v.lt(L::c(0.0)), v + L::c(1.0), v);
-    v.min(L::c(ONE_MINUS_EPS as f64))
+    // NaN goes in the second operand of min, which returns it.
+    L::c(ONE_MINUS_EPS as f64).min(v)
 }
 
 /// sin θ from t = 1 − cos θ, as √(t(2 − t)): no cancellation near the pole, unlike √(1 − cos²θ).

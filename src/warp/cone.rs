@@ -31,13 +31,14 @@ pub fn uniform_cone<L: Lane>(u: V2<L>, h: L) -> V3<L> {
     let t = u.x * h;
     let sin_theta = sin_from_one_minus_cos(t);
     let (s, c) = u.y.sincos_2pi();
-    V3::new(sin_theta * c, sin_theta * s, L::c(1.0) - t).canon()
+    V3::new(sin_theta * c, sin_theta * s, L::c(1.0) - t).nan_where(u.any_nan() | h.is_nan())
 }
 
 /// 1/(2πh) per steradian inside the cone. h ≤ 0 (a degenerate cone) and NaN give 0.
 #[inline(always)]
 pub fn uniform_cone_pdf<L: Lane>(h: L) -> L {
-    let h = h.min(L::c(H_MAX));
+    // NaN must reach the select below as NaN, so it goes in the second operand of min.
+    let h = L::c(H_MAX).min(h);
     L::select(
         h.gt(L::c(0.0)),
         L::c(0.5 * core::f64::consts::FRAC_1_PI) / h,
@@ -50,7 +51,7 @@ pub fn uniform_cone_pdf<L: Lane>(h: L) -> L {
 pub fn uniform_cone_inverse<L: Lane>(w: V3<L>, h: L) -> V2<L> {
     let t = one_minus_z(w);
     let u0 = (t / h).clamp(L::c(0.0), L::c(1.0));
-    V2::new(u0, azimuth_fraction(w.x, w.y)).canon()
+    V2::new(u0, azimuth_fraction(w.x, w.y)).nan_where(w.any_nan() | h.is_nan())
 }
 
 /// 1 − z of a unit vector, as (x² + y²)/(1 + z) in the upper half and 1 − z below.

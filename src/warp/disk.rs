@@ -33,7 +33,7 @@ pub(crate) fn concentric_with_one_minus_r<L: Lane>(u: V2<L>) -> (V2<L>, L) {
 
 #[inline(always)]
 pub fn concentric_disk<L: Lane>(u: V2<L>) -> V2<L> {
-    concentric_with_one_minus_r(u).0.canon()
+    concentric_with_one_minus_r(u).0.nan_where(u.any_nan())
 }
 
 /// Inverse of the concentric map. The larger |coordinate| selects the wedge; atan of the ratio of
@@ -49,11 +49,12 @@ pub fn concentric_disk_inverse<L: Lane>(p: V2<L>) -> V2<L> {
     let t = phi * L::c(4.0 / core::f64::consts::PI);
     let a = L::select(x_major, r, r * t);
     let b = L::select(x_major, r * t, r);
-    V2::new(
+    // A point a rounding outside the disk would map a rounding outside the square: clamp.
+    clamp_u(V2::new(
         a.mul_add(L::c(0.5), L::c(0.5)),
         b.mul_add(L::c(0.5), L::c(0.5)),
-    )
-    .canon()
+    ))
+    .nan_where(p.any_nan())
 }
 
 /// The polar map: r = √u₀, φ = 2πu₁.
@@ -62,13 +63,13 @@ pub fn polar_disk<L: Lane>(u: V2<L>) -> V2<L> {
     let u = clamp_u(u);
     let r = u.x.sqrt();
     let (s, c) = u.y.sincos_2pi();
-    V2::new(r * c, r * s).canon()
+    V2::new(r * c, r * s).nan_where(u.any_nan())
 }
 
 /// Inverse of the polar map: u₀ = |p|², u₁ = azimuth/2π in [0, 1).
 #[inline(always)]
 pub fn polar_disk_inverse<L: Lane>(p: V2<L>) -> V2<L> {
-    V2::new(p.length_squared(), azimuth_fraction(p.x, p.y)).canon()
+    V2::new(p.length_squared(), azimuth_fraction(p.x, p.y)).nan_where(p.any_nan())
 }
 
 /// Area pdf of a uniform point in the unit disk: 1/π.

@@ -12,7 +12,7 @@ pub fn uniform_hemisphere<L: Lane>(u: V2<L>) -> V3<L> {
     let z = u.x;
     let r = ((L::c(1.0) - z) * (L::c(1.0) + z)).max(L::c(0.0)).sqrt();
     let (s, c) = u.y.sincos_2pi();
-    V3::new(r * c, r * s, z).canon()
+    V3::new(r * c, r * s, z).nan_where(u.any_nan())
 }
 
 #[inline(always)]
@@ -23,7 +23,7 @@ pub fn uniform_hemisphere_pdf<L: Lane>() -> L {
 /// Inverse: u₀ = z (clamped to [0, 1]), u₁ = azimuth/2π.
 #[inline(always)]
 pub fn uniform_hemisphere_inverse<L: Lane>(w: V3<L>) -> V2<L> {
-    V2::new(clamp01(w.z), azimuth_fraction(w.x, w.y)).canon()
+    V2::new(clamp01(w.z), azimuth_fraction(w.x, w.y)).nan_where(w.any_nan())
 }
 
 /// Cosine hemisphere: the concentric disk lifted to the hemisphere, z = √((1 − r)(1 + r)) with
@@ -34,7 +34,7 @@ pub fn cosine_hemisphere<L: Lane>(u: V2<L>) -> V3<L> {
     let z = (one_minus_r * (L::c(2.0) - one_minus_r))
         .max(L::c(0.0))
         .sqrt();
-    V3::new(p.x, p.y, z).canon()
+    V3::new(p.x, p.y, z).nan_where(u.any_nan())
 }
 
 /// pdf per steradian: cos θ/π for cos θ > 0, else 0 (the rim and below; NaN gives 0).

@@ -117,7 +117,7 @@ pub fn uniform_hemisphere_pdf() -> f32 {
     hemisphere::uniform_hemisphere_pdf::<f32>()
 }
 
-/// Inverse of [`uniform_hemisphere`] for a unit direction: u = (z, azimuth/2π), clamped to [0, 1)².
+/// Inverse of [`uniform_hemisphere`] for a unit direction: u = (z, azimuth/2π) in [0, 1]×[0, 1).
 #[inline]
 pub fn uniform_hemisphere_inverse(w: Vec3) -> Vec2 {
     hemisphere::uniform_hemisphere_inverse::<f32>(w.into()).into()

@@ -24,7 +24,7 @@ pub fn phong_lobe<L: Lane>(u: V2<L>, n: L) -> V3<L> {
     let t = -(u.x.ln() / (n + L::c(1.0))).exp_m1();
     let sin_a = sin_from_one_minus_cos(t);
     let (s, c) = u.y.sincos_2pi();
-    V3::new(sin_a * c, sin_a * s, L::c(1.0) - t).canon()
+    V3::new(sin_a * c, sin_a * s, L::c(1.0) - t).nan_where(u.any_nan() | n.is_nan())
 }
 
 /// (n+1)/(2π)·exp(n·ln cos α) for cos α > 0, else 0 (the horizon is outside the support, which
@@ -46,5 +46,5 @@ pub fn phong_lobe_inverse<L: Lane>(w: V3<L>, n: L) -> V2<L> {
     let t = one_minus_z(w);
     let u0 = ((n + L::c(1.0)) * (-t).ln_1p()).exp();
     let u0 = L::select(w.z.gt(L::c(0.0)), u0.min(L::c(1.0)), L::c(0.0));
-    V2::new(u0, azimuth_fraction(w.x, w.y)).canon()
+    V2::new(u0, azimuth_fraction(w.x, w.y)).nan_where(w.any_nan() | n.is_nan())
 }

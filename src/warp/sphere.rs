@@ -11,7 +11,7 @@ pub fn uniform_sphere<L: Lane>(u: V2<L>) -> V3<L> {
     let z = u.x.mul_add(L::c(-2.0), L::c(1.0));
     let r = L::c(2.0) * (u.x * (L::c(1.0) - u.x)).max(L::c(0.0)).sqrt();
     let (s, c) = u.y.sincos_2pi();
-    V3::new(r * c, r * s, z).canon()
+    V3::new(r * c, r * s, z).nan_where(u.any_nan())
 }
 
 #[inline(always)]
@@ -26,5 +26,5 @@ pub fn uniform_sphere_inverse<L: Lane>(w: V3<L>) -> V2<L> {
     let rho2 = w.x.mul_add(w.x, w.y * w.y);
     let one_minus_z = L::select(w.z.gt(L::c(0.0)), rho2 / (L::c(1.0) + w.z), L::c(1.0) - w.z);
     let u0 = (one_minus_z * L::c(0.5)).clamp(L::c(0.0), L::c(1.0));
-    V2::new(u0, azimuth_fraction(w.x, w.y)).canon()
+    V2::new(u0, azimuth_fraction(w.x, w.y)).nan_where(w.any_nan())
 }

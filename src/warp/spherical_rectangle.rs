@@ -88,7 +88,10 @@ fn setup<L: Lane>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
     let s_map = g0 + g1 - k;
     let omega = rect_solid_angle(x0, x1, y0, y1, z0);
 
-    let valid = omega.gt(L::c(0.0))
+    // z0 ≈ 0: the shading point lies in the rectangle's plane (to within rounding), where VOS may
+    // still report up to 4π.
+    let valid = z0.lt(L::c(-1e-6) * corner.length())
+        & omega.gt(L::c(0.0))
         & omega.is_finite()
         & exl.gt(L::c(0.0))
         & eyl.gt(L::c(0.0))
@@ -139,10 +142,11 @@ fn urena<L: Lane>(s: &Setup<L>, u: V2<L>) -> (L, L) {
     let h1 = elevation(s.y1, d);
     let hv = u.y.mul_add(h1 - h0, h0);
     let hv2 = hv * hv;
+    // Written so that NaN takes the formula's branch and stays NaN.
     let yv = L::select(
-        hv2.lt(L::c(1.0 - 1e-6)),
-        (hv * d) / (L::c(1.0) - hv2).sqrt(),
+        hv2.ge(L::c(1.0 - 1e-6)),
         s.y1,
+        (hv * d) / (L::c(1.0) - hv2).sqrt(),
     );
     (xu, yv.clamp(s.y0, s.y1))
 }
@@ -224,5 +228,5 @@ pub fn spherical_rectangle_inverse<L: Lane>(
     let h0 = elevation(s.y0, dist);
     let h1 = elevation(s.y1, dist);
     let u1 = (elevation(y, dist) - h0) / (h1 - h0);
-    clamp_u(V2::select(s.by_area, st, V2::new(u0, u1))).canon()
+    clamp_u(V2::select(s.by_area, st, V2::new(u0, u1))).nan_where(p.any_nan())
 }

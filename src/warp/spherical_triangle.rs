@@ -34,8 +34,8 @@ struct Setup<L: Lane> {
     /// α, the interior angle at A, and its sine.
     alpha: L,
     sin_alpha: L,
-    /// cos and sin of the arc AB.
-    cos_c: L,
+    /// 1 − cos and sin of the arc AB.
+    one_minus_cos_c: L,
     sin_c: L,
     /// True where the triangle can be sampled at all.
     valid: L::Mask,
@@ -71,10 +71,17 @@ fn setup<L: Lane>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     let sin_alpha = nab.cross(nac).length();
     let alpha = sin_alpha.atan2(cos_alpha);
     // The arc c from A to B, as its cosine and (from the same cross product) its sine.
-    let cos_c = ua.dot(ub);
+    let dab = ua - ub;
+    let one_minus_cos_c = L::c(0.5) * dab.dot(dab);
     let sin_c = lab / (la * lb);
 
-    let valid = omega.gt(L::c(0.0))
+    // Collinear vertices can leave a rounding-sized normal, and a shading point in the plane a
+    // rounding-sized triple product (with FMA, say), while VOS still reports up to 2π. Neither is
+    // a light: the plane must be tilted by more than 1e-6 rad both ways.
+    let nn = n.length();
+    let valid = nn.gt(L::c(1e-6) * e1.length() * e2.length())
+        & ua.dot(n).abs().gt(L::c(1e-6) * nn)
+        & omega.gt(L::c(0.0))
         & omega.is_finite()
         & alpha.is_finite()
         & n.dot(n).is_finite()
@@ -94,7 +101,7 @@ fn setup<L: Lane>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
         omega,
         alpha,
         sin_alpha,
-        cos_c,
+        one_minus_cos_c,
         sin_c,
         valid,
         by_area,
@@ -114,7 +121,8 @@ fn ortho<L: Lane>(v: V3<L>, u: V3<L>) -> V3<L> {
 /// cancels when Ĉ is near A: a small u₀ then loses up to 3e-4 of direction in f32. Expanding the
 /// ratio with φ = Â − α, h₁ = sin(Â/2), h₂ = sin(Â/2 − α) and k = 1 − cos c = sin²c/(1 + cos c):
 ///
-/// - P = 1 − cos φ cos α = h₁² + h₂² and Q = sin α sin φ;
+/// - P = 1 − cos φ cos α = h₁² + h₂² and Q = sin α sin φ (k itself is taken as |A − B|²/2,
+///   which does not cancel even when A and B are nearly opposite);
 /// - D = 2h₁² − kQ and cos b′ = (kP − 2h₁²)/D;
 /// - sin b′ = 2 sin c |h₁h₂|/|D|.
 ///
@@ -126,7 +134,7 @@ fn arvo<L: Lane>(s: &Setup<L>, u: V2<L>) -> V3<L> {
     let (h2, c2) = (half - s.alpha).sin_cos();
     let p = h1.mul_add(h1, h2 * h2);
     let q = s.sin_alpha * h1.mul_add(c2, c1 * h2);
-    let k = s.sin_c * s.sin_c / (L::c(1.0) + s.cos_c);
+    let k = s.one_minus_cos_c;
     let two_h1_sq = L::c(2.0) * h1 * h1;
     let d = (-k).mul_add(q, two_h1_sq);
     let cos_b = k.mul_add(p, -two_h1_sq) / d;
@@ -140,7 +148,9 @@ fn arvo<L: Lane>(s: &Setup<L>, u: V2<L>) -> V3<L> {
     let sin_z = (one_minus_z * (L::c(2.0) - one_minus_z))
         .max(L::c(0.0))
         .sqrt();
-    s.ub.scale(z) + ortho(c_hat, s.ub).scale(sin_z)
+    // Each step is accurate to a few ulp, but their rounding leaves |w| off 1 by up to 1e-5 for
+    // wide triangles: renormalise, which also pulls the point back onto the sphere's triangle.
+    (s.ub.scale(z) + ortho(c_hat, s.ub).scale(sin_z)).normalize()
 }
 
 /// The point of the plane hit by unit direction `w`, as barycentrics (b₀, b₁, b₂), and whether
@@ -235,5 +245,5 @@ pub fn spherical_triangle_inverse<L: Lane>(w: V3<L>, a: V3<L>, b: V3<L>, c: V3<L
         L::select(at_b, L::c(0.0), u0),
         L::select(at_b, L::c(0.0), u1),
     );
-    clamp_u(V2::select(s.by_area, u_area, u_sph)).canon()
+    clamp_u(V2::select(s.by_area, u_area, u_sph)).nan_where(w.any_nan())
 }

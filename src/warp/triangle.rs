@@ -15,7 +15,7 @@ pub fn uniform_triangle<L: Lane>(u: V2<L>) -> V3<L> {
     let b0 = L::select(first, half0, u.x - half1);
     let b1 = L::select(first, u.y - half0, half1);
     let b2 = L::c(1.0) - u.x.max(u.y);
-    V3::new(b0, b1, b2).canon()
+    V3::new(b0, b1, b2).nan_where(u.any_nan())
 }
 
 /// Inverse: (b₀ + b₁, 2b₁) if b₀ > b₁, else (2b₀, b₀ + b₁). Clamped to [0, 1].
@@ -27,7 +27,7 @@ pub fn uniform_triangle_inverse<L: Lane>(b: V3<L>) -> V2<L> {
         L::select(first, sum, b.x * L::c(2.0)),
         L::select(first, b.y * L::c(2.0), sum),
     );
-    clamp_u(u).canon()
+    clamp_u(u).nan_where(b.any_nan())
 }
 
 /// Density of the barycentrics (b₀, b₁) over the unit square: 2 inside the triangle b₀ + b₁ ≤ 1,

@@ -1,0 +1,1591 @@
+//! The hard-case table of REFERENCES.md §8 (cases 1–12, 14, 15 and 17), plus the bad-input
+//! behaviour that the rustdoc of `mcsample::warp` and `mcsample::frame` promises.
+//!
+//! One table-driven test: every case is a named closure returning `Result<(), String>`; all run
+//! (a panic counts as a failure of its case) and every failure is reported together.
+
+mod common;
+
+use std::panic::{AssertUnwindSafe, catch_unwind};
+
+use common::*;
+use glam::{Vec2, Vec3};
+use mcsample::frame::Frame;
+use mcsample::warp::{self, ONE_MINUS_EPS};
+use mcsample::x8::{F32x8, Vec2x8, Vec3x8};
+
+type Out = Vec<f32>;
+type Lanes = Vec<[f32; 8]>;
+type Check = Box<dyn Fn(&[f32]) -> Result<(), String>>;
+
+fn o2(v: Vec2) -> Out {
+    vec![v.x, v.y]
+}
+fn o3(v: Vec3) -> Out {
+    vec![v.x, v.y, v.z]
+}
+fn o3p((v, p): (Vec3, f32)) -> Out {
+    vec![v.x, v.y, v.z, p]
+}
+fn l2(v: Vec2x8) -> Lanes {
+    vec![v.x.to_array(), v.y.to_array()]
+}
+fn l3(v: Vec3x8) -> Lanes {
+    vec![v.x.to_array(), v.y.to_array(), v.z.to_array()]
+}
+fn l3p((v, p): (Vec3x8, F32x8)) -> Lanes {
+    vec![v.x.to_array(), v.y.to_array(), v.z.to_array(), p.to_array()]
+}
+fn l1(v: F32x8) -> Lanes {
+    vec![v.to_array()]
+}
+fn s3(v: Vec3) -> Vec3x8 {
+    Vec3x8::splat(v)
+}
+fn s1(x: f32) -> F32x8 {
+    F32x8::splat(x)
+}
+fn dv3(v: Vec3) -> D3 {
+    [v.x as f64, v.y as f64, v.z as f64]
+}
+
+/// Lane `i` of a packet result equals the scalar result bit for bit (NaN payloads included).
+fn same_bits(what: &str, s: &[f32], p: &[[f32; 8]], lane: usize) -> Result<(), String> {
+    if s.len() != p.len() {
+        return Err(format!("{what}: output arity {} vs {}", s.len(), p.len()));
+    }
+    for (k, (a, b)) in s.iter().zip(p).enumerate() {
+        if a.to_bits() != b[lane].to_bits() {
+            return Err(format!(
+                "{what}: output {k}: scalar {a:e} ({:#010x}) ≠ lane {lane} {:e} ({:#010x})",
+                a.to_bits(),
+                b[lane],
+                b[lane].to_bits()
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Every NaN output is the canonical quiet NaN, bits 0x7fc0_0000 (crate docs, "Bad input").
+fn canonical(what: &str, v: &[f32]) -> Result<(), String> {
+    match v.iter().find(|x| x.is_nan() && x.to_bits() != 0x7fc0_0000) {
+        None => Ok(()),
+        Some(x) => Err(format!(
+            "{what}: non-canonical NaN {:#010x} in {v:?}",
+            x.to_bits()
+        )),
+    }
+}
+
+fn finite(what: &str, v: &[f32]) -> Result<(), String> {
+    if v.iter().all(|x| x.is_finite()) {
+        Ok(())
+    } else {
+        Err(format!("{what}: non-finite output {v:?}"))
+    }
+}
+
+fn unit(what: &str, v: &[f32]) -> Result<(), String> {
+    let l = dv3(Vec3::new(v[0], v[1], v[2]));
+    let l = norm(l);
+    if (l - 1.0).abs() <= 1e-6 {
+        Ok(())
+    } else {
+        Err(format!("{what}: |w| = {l} for {v:?}"))
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The warps, each with its scalar face, its packet face and its domain.
+
+struct Warp {
+    name: String,
+    s: Box<dyn Fn(Vec2) -> Out>,
+    p: Box<dyn Fn(Vec2x8) -> Lanes>,
+    domain: Check,
+    /// The documented fixed output of a spherical polygon sampler at NaN u.
+    fixed: Option<Vec3>,
+}
+
+fn disk_domain() -> Check {
+    Box::new(|v| {
+        finite("disk", v)?;
+        let r = (v[0] as f64).hypot(v[1] as f64);
+        if r <= 1.0 + 1e-6 {
+            Ok(())
+        } else {
+            Err(format!("disk: |p| = {r}"))
+        }
+    })
+}
+
+fn dir_domain(z_min: f64) -> Check {
+    Box::new(move |v| {
+        finite("direction", v)?;
+        unit("direction", v)?;
+        if v[2] as f64 >= z_min {
+            Ok(())
+        } else {
+            Err(format!("direction: z = {:e} < {z_min:e}", v[2]))
+        }
+    })
+}
+
+/// A spherical-triangle sample: unit, finite, pdf > 0 and inside the triangle within 1e-5 rad.
+fn sph_tri_domain(a: Vec3, b: Vec3, c: Vec3) -> Check {
+    Box::new(move |v| {
+        finite("spherical_triangle", v)?;
+        unit("spherical_triangle", v)?;
+        if v[3].is_nan() || v[3] <= 0.0 {
+            return Err(format!("spherical_triangle: pdf {} ≤ 0", v[3]));
+        }
+        let out =
+            spherical_triangle_outside(dv3(Vec3::new(v[0], v[1], v[2])), dv3(a), dv3(b), dv3(c));
+        if out <= 1e-5 {
+            Ok(())
+        } else {
+            Err(format!(
+                "spherical_triangle: {out:e} rad outside, w = {v:?}"
+            ))
+        }
+    })
+}
+
+/// A spherical-rectangle sample: a finite point on the rectangle (s, t ∈ [0, 1] within 1e-5, in
+/// the plane within 1e-5 of its distance) and pdf > 0.
+fn sph_rect_domain(corner: Vec3, ex: Vec3, ey: Vec3) -> Check {
+    Box::new(move |v| {
+        finite("spherical_rectangle", v)?;
+        if v[3].is_nan() || v[3] <= 0.0 {
+            return Err(format!("spherical_rectangle: pdf {} ≤ 0", v[3]));
+        }
+        let p = dv3(Vec3::new(v[0], v[1], v[2]));
+        let st = rect_coords(p, dv3(corner), dv3(ex), dv3(ey));
+        let tol = 1e-5;
+        if st[0] < -tol || st[0] > 1.0 + tol || st[1] < -tol || st[1] > 1.0 + tol {
+            return Err(format!(
+                "spherical_rectangle: (s, t) = {st:?} for p = {v:?}"
+            ));
+        }
+        if st[2].abs() > 1e-5 * norm(p) {
+            return Err(format!("spherical_rectangle: {:e} off the plane", st[2]));
+        }
+        Ok(())
+    })
+}
+
+// The test geometry, in f32.
+const TRI_LARGE: [[f32; 3]; 3] = [
+    [1.0, 0.0, 0.1],
+    [-0.5, 0.866_025_4, 0.1],
+    [-0.5, -0.866_025_4, 0.1],
+];
+const RECT_BIG: [[f32; 3]; 3] = [[-1.0, -0.5, 0.8], [2.0, 0.0, 0.0], [0.0, 1.5, 0.0]];
+
+fn f32s(v: (D3, D3, D3)) -> [[f32; 3]; 3] {
+    [f3(v.0), f3(v.1), f3(v.2)]
+}
+/// A triangle just above the spherical-sampling threshold: Ω ≈ 3·SPHERICAL_TRIANGLE_MIN_SR.
+fn tri_small() -> [[f32; 3]; 3] {
+    let omega = 3.0 * warp::SPHERICAL_TRIANGLE_MIN_SR as f64;
+    let dir = normalize([0.3, -0.2, 1.0]);
+    f32s(equilateral(dir, [0.6, -0.2, 1.0], side_for(omega, 1.0)))
+}
+/// A triangle sampled by area: Ω ≈ 0.1·SPHERICAL_TRIANGLE_MIN_SR.
+fn tri_tiny() -> [[f32; 3]; 3] {
+    let omega = 0.1 * warp::SPHERICAL_TRIANGLE_MIN_SR as f64;
+    let dir = normalize([0.3, -0.2, 1.0]);
+    f32s(equilateral(dir, [0.6, -0.2, 1.0], side_for(omega, 1.0)))
+}
+/// A rectangle just above the spherical-sampling threshold: Ω ≈ 1.5·SPHERICAL_RECTANGLE_MIN_SR.
+fn rect_small() -> [[f32; 3]; 3] {
+    let s = (1.5 * warp::SPHERICAL_RECTANGLE_MIN_SR as f64).sqrt();
+    f32s(centred_rectangle(
+        normalize([0.3, -0.2, 1.0]),
+        [0.6, -0.2, 1.0],
+        s * 1.1,
+        s,
+        0.4,
+    ))
+}
+/// A rectangle sampled by area: Ω ≈ 2.4e-5 sr.
+fn rect_tiny() -> [[f32; 3]; 3] {
+    [[0.3, 0.2, 2.0], [0.01, 0.0, 0.0], [0.0, 0.01, 0.0]]
+}
+
+fn v(a: [f32; 3]) -> Vec3 {
+    Vec3::from_array(a)
+}
+
+fn warps() -> Vec<Warp> {
+    let mut w: Vec<Warp> = vec![
+        Warp {
+            name: "concentric_disk".into(),
+            s: Box::new(|u| o2(warp::concentric_disk(u))),
+            p: Box::new(|u| l2(warp::x8::concentric_disk(u))),
+            domain: disk_domain(),
+            fixed: None,
+        },
+        Warp {
+            name: "polar_disk".into(),
+            s: Box::new(|u| o2(warp::polar_disk(u))),
+            p: Box::new(|u| l2(warp::x8::polar_disk(u))),
+            domain: disk_domain(),
+            fixed: None,
+        },
+        Warp {
+            name: "uniform_hemisphere".into(),
+            s: Box::new(|u| o3(warp::uniform_hemisphere(u))),
+            p: Box::new(|u| l3(warp::x8::uniform_hemisphere(u))),
+            domain: dir_domain(0.0),
+            fixed: None,
+        },
+        Warp {
+            name: "cosine_hemisphere".into(),
+            s: Box::new(|u| o3(warp::cosine_hemisphere(u))),
+            p: Box::new(|u| l3(warp::x8::cosine_hemisphere(u))),
+            domain: dir_domain(0.0),
+            fixed: None,
+        },
+        Warp {
+            name: "uniform_sphere".into(),
+            s: Box::new(|u| o3(warp::uniform_sphere(u))),
+            p: Box::new(|u| l3(warp::x8::uniform_sphere(u))),
+            domain: dir_domain(-1.0),
+            fixed: None,
+        },
+        Warp {
+            name: "uniform_triangle".into(),
+            s: Box::new(|u| o3(warp::uniform_triangle(u))),
+            p: Box::new(|u| l3(warp::x8::uniform_triangle(u))),
+            domain: Box::new(|b| {
+                finite("uniform_triangle", b)?;
+                let sum = b[0] as f64 + b[1] as f64 + b[2] as f64;
+                if b.iter().all(|&x| x >= 0.0) && (sum - 1.0).abs() <= 1e-6 {
+                    Ok(())
+                } else {
+                    Err(format!("uniform_triangle: b = {b:?}, sum {sum}"))
+                }
+            }),
+            fixed: None,
+        },
+        Warp {
+            name: "tent(u.x)".into(),
+            s: Box::new(|u| vec![warp::tent(u.x)]),
+            p: Box::new(|u| l1(warp::x8::tent(u.x))),
+            domain: Box::new(|x| {
+                if (-1.0..=1.0).contains(&x[0]) {
+                    Ok(())
+                } else {
+                    Err(format!("tent: x = {}", x[0]))
+                }
+            }),
+            fixed: None,
+        },
+    ];
+    for h in [2.0f32, 0.3, 1e-7] {
+        w.push(Warp {
+            name: format!("uniform_cone h={h}"),
+            s: Box::new(move |u| o3(warp::uniform_cone(u, h))),
+            p: Box::new(move |u| l3(warp::x8::uniform_cone(u, s1(h)))),
+            domain: dir_domain(1.0 - h as f64 - 1e-6),
+            fixed: None,
+        });
+    }
+    for n in [0.0f32, 1.0, 20.0, 1e6] {
+        w.push(Warp {
+            name: format!("phong_lobe n={n}"),
+            s: Box::new(move |u| o3(warp::phong_lobe(u, n))),
+            p: Box::new(move |u| l3(warp::x8::phong_lobe(u, s1(n)))),
+            domain: dir_domain(0.0),
+            fixed: None,
+        });
+    }
+    for (label, t) in [
+        ("large", TRI_LARGE),
+        ("small", tri_small()),
+        ("tiny/area", tri_tiny()),
+    ] {
+        let (a, b, c) = (v(t[0]), v(t[1]), v(t[2]));
+        w.push(Warp {
+            name: format!("spherical_triangle {label}"),
+            s: Box::new(move |u| o3p(warp::spherical_triangle(u, a, b, c))),
+            p: Box::new(move |u| l3p(warp::x8::spherical_triangle(u, s3(a), s3(b), s3(c)))),
+            domain: sph_tri_domain(a, b, c),
+            fixed: Some(Vec3::Z),
+        });
+    }
+    for (label, r) in [
+        ("big", RECT_BIG),
+        ("small", rect_small()),
+        ("tiny/area", rect_tiny()),
+    ] {
+        let (c, ex, ey) = (v(r[0]), v(r[1]), v(r[2]));
+        w.push(Warp {
+            name: format!("spherical_rectangle {label}"),
+            s: Box::new(move |u| o3p(warp::spherical_rectangle(u, c, ex, ey))),
+            p: Box::new(move |u| l3p(warp::x8::spherical_rectangle(u, s3(c), s3(ex), s3(ey)))),
+            domain: sph_rect_domain(c, ex, ey),
+            fixed: Some(c),
+        });
+    }
+    w
+}
+
+/// Functions of one f32 (pdfs, inverses, helpers, warps in their parameter) for the NaN case.
+struct Fun {
+    name: &'static str,
+    s: Box<dyn Fn(f32) -> Out>,
+    p: Box<dyn Fn(F32x8) -> Lanes>,
+    /// What the documentation promises at NaN input.
+    at_nan: Check,
+}
+
+fn is_zero(what: &'static str) -> Check {
+    Box::new(move |v| {
+        if v.iter().all(|&x| x == 0.0) {
+            Ok(())
+        } else {
+            Err(format!("{what}: pdf at NaN is {v:?}, documented 0"))
+        }
+    })
+}
+fn last_is_zero(what: &'static str) -> Check {
+    Box::new(move |v| {
+        if v[v.len() - 1] == 0.0 {
+            Ok(())
+        } else {
+            Err(format!("{what}: pdf at NaN is {v:?}, documented 0"))
+        }
+    })
+}
+fn all_nan(what: &'static str) -> Check {
+    Box::new(move |v| {
+        if v.iter().all(|x| x.is_nan()) {
+            Ok(())
+        } else {
+            Err(format!("{what}: NaN in gives {v:?}, documented NaN"))
+        }
+    })
+}
+fn any() -> Check {
+    Box::new(|_| Ok(()))
+}
+
+fn funs() -> Vec<Fun> {
+    let t = TRI_LARGE.map(v);
+    let r = RECT_BIG.map(v);
+    let wn = |x: f32| Vec3::new(x, x, x);
+    let wn8 = |x: F32x8| Vec3x8::new(x, x, x);
+    let pn = |x: f32| Vec2::new(x, x);
+    let pn8 = |x: F32x8| Vec2x8::new(x, x);
+    vec![
+        Fun {
+            name: "cosine_hemisphere_pdf",
+            s: Box::new(|x| vec![warp::cosine_hemisphere_pdf(x)]),
+            p: Box::new(|x| l1(warp::x8::cosine_hemisphere_pdf(x))),
+            at_nan: is_zero("cosine_hemisphere_pdf"),
+        },
+        Fun {
+            name: "uniform_cone_pdf(h)",
+            s: Box::new(|x| vec![warp::uniform_cone_pdf(x)]),
+            p: Box::new(|x| l1(warp::x8::uniform_cone_pdf(x))),
+            at_nan: is_zero("uniform_cone_pdf"),
+        },
+        Fun {
+            name: "phong_lobe_pdf(cos, 20)",
+            s: Box::new(|x| vec![warp::phong_lobe_pdf(x, 20.0)]),
+            p: Box::new(|x| l1(warp::x8::phong_lobe_pdf(x, s1(20.0)))),
+            at_nan: is_zero("phong_lobe_pdf(NaN, n)"),
+        },
+        Fun {
+            name: "phong_lobe_pdf(0.5, n)",
+            s: Box::new(|x| vec![warp::phong_lobe_pdf(0.5, x)]),
+            p: Box::new(|x| l1(warp::x8::phong_lobe_pdf(s1(0.5), x))),
+            at_nan: is_zero("phong_lobe_pdf(cos, NaN)"),
+        },
+        Fun {
+            name: "tent_pdf",
+            s: Box::new(|x| vec![warp::tent_pdf(x)]),
+            p: Box::new(|x| l1(warp::x8::tent_pdf(x))),
+            at_nan: is_zero("tent_pdf"),
+        },
+        Fun {
+            name: "tent_inverse",
+            s: Box::new(|x| vec![warp::tent_inverse(x)]),
+            p: Box::new(|x| l1(warp::x8::tent_inverse(x))),
+            at_nan: any(),
+        },
+        Fun {
+            name: "uniform_triangle_pdf(b, b)",
+            s: Box::new(move |x| vec![warp::uniform_triangle_pdf(pn(x))]),
+            p: Box::new(move |x| l1(warp::x8::uniform_triangle_pdf(pn8(x)))),
+            at_nan: is_zero("uniform_triangle_pdf"),
+        },
+        Fun {
+            name: "uniform_triangle_pdf(b, 0.2)",
+            s: Box::new(|x| vec![warp::uniform_triangle_pdf(Vec2::new(x, 0.2))]),
+            p: Box::new(|x| l1(warp::x8::uniform_triangle_pdf(Vec2x8::new(x, s1(0.2))))),
+            at_nan: is_zero("uniform_triangle_pdf"),
+        },
+        Fun {
+            name: "spherical_triangle_pdf(w)",
+            s: Box::new(move |x| vec![warp::spherical_triangle_pdf(wn(x), t[0], t[1], t[2])]),
+            p: Box::new(move |x| {
+                l1(warp::x8::spherical_triangle_pdf(
+                    wn8(x),
+                    s3(t[0]),
+                    s3(t[1]),
+                    s3(t[2]),
+                ))
+            }),
+            at_nan: is_zero("spherical_triangle_pdf"),
+        },
+        Fun {
+            name: "spherical_triangle_pdf(vertex a)",
+            s: Box::new(move |x| vec![warp::spherical_triangle_pdf(Vec3::Z, wn(x), t[1], t[2])]),
+            p: Box::new(move |x| {
+                l1(warp::x8::spherical_triangle_pdf(
+                    s3(Vec3::Z),
+                    wn8(x),
+                    s3(t[1]),
+                    s3(t[2]),
+                ))
+            }),
+            at_nan: is_zero("spherical_triangle_pdf"),
+        },
+        Fun {
+            name: "spherical_triangle(vertex c)",
+            s: Box::new(move |x| {
+                o3p(warp::spherical_triangle(
+                    Vec2::splat(0.3),
+                    t[0],
+                    t[1],
+                    wn(x),
+                ))
+            }),
+            p: Box::new(move |x| {
+                l3p(warp::x8::spherical_triangle(
+                    Vec2x8::splat(Vec2::splat(0.3)),
+                    s3(t[0]),
+                    s3(t[1]),
+                    wn8(x),
+                ))
+            }),
+            at_nan: last_is_zero("spherical_triangle with a NaN vertex"),
+        },
+        Fun {
+            name: "spherical_triangle_inverse(w)",
+            s: Box::new(move |x| o2(warp::spherical_triangle_inverse(wn(x), t[0], t[1], t[2]))),
+            p: Box::new(move |x| {
+                l2(warp::x8::spherical_triangle_inverse(
+                    wn8(x),
+                    s3(t[0]),
+                    s3(t[1]),
+                    s3(t[2]),
+                ))
+            }),
+            at_nan: any(),
+        },
+        Fun {
+            name: "spherical_rectangle_pdf(w)",
+            s: Box::new(move |x| vec![warp::spherical_rectangle_pdf(wn(x), r[0], r[1], r[2])]),
+            p: Box::new(move |x| {
+                l1(warp::x8::spherical_rectangle_pdf(
+                    wn8(x),
+                    s3(r[0]),
+                    s3(r[1]),
+                    s3(r[2]),
+                ))
+            }),
+            at_nan: is_zero("spherical_rectangle_pdf"),
+        },
+        Fun {
+            name: "spherical_rectangle(corner)",
+            s: Box::new(move |x| {
+                o3p(warp::spherical_rectangle(
+                    Vec2::splat(0.3),
+                    wn(x),
+                    r[1],
+                    r[2],
+                ))
+            }),
+            p: Box::new(move |x| {
+                l3p(warp::x8::spherical_rectangle(
+                    Vec2x8::splat(Vec2::splat(0.3)),
+                    wn8(x),
+                    s3(r[1]),
+                    s3(r[2]),
+                ))
+            }),
+            at_nan: last_is_zero("spherical_rectangle with a NaN corner"),
+        },
+        Fun {
+            name: "spherical_rectangle_inverse(p)",
+            s: Box::new(move |x| o2(warp::spherical_rectangle_inverse(wn(x), r[0], r[1], r[2]))),
+            p: Box::new(move |x| {
+                l2(warp::x8::spherical_rectangle_inverse(
+                    wn8(x),
+                    s3(r[0]),
+                    s3(r[1]),
+                    s3(r[2]),
+                ))
+            }),
+            at_nan: any(),
+        },
+        Fun {
+            name: "cone_h_from_sin2",
+            s: Box::new(|x| vec![warp::cone_h_from_sin2(x)]),
+            p: Box::new(|x| l1(warp::x8::cone_h_from_sin2(x))),
+            at_nan: all_nan("cone_h_from_sin2"),
+        },
+        Fun {
+            name: "cone_h_from_cos",
+            s: Box::new(|x| vec![warp::cone_h_from_cos(x)]),
+            p: Box::new(|x| l1(warp::x8::cone_h_from_cos(x))),
+            at_nan: any(),
+        },
+        Fun {
+            name: "uniform_cone(u, h)",
+            s: Box::new(|x| o3(warp::uniform_cone(Vec2::splat(0.3), x))),
+            p: Box::new(|x| l3(warp::x8::uniform_cone(Vec2x8::splat(Vec2::splat(0.3)), x))),
+            at_nan: any(),
+        },
+        Fun {
+            name: "phong_lobe(u, n)",
+            s: Box::new(|x| o3(warp::phong_lobe(Vec2::splat(0.3), x))),
+            p: Box::new(|x| l3(warp::x8::phong_lobe(Vec2x8::splat(Vec2::splat(0.3)), x))),
+            at_nan: any(),
+        },
+        Fun {
+            name: "concentric_disk_inverse",
+            s: Box::new(move |x| o2(warp::concentric_disk_inverse(pn(x)))),
+            p: Box::new(move |x| l2(warp::x8::concentric_disk_inverse(pn8(x)))),
+            at_nan: all_nan("concentric_disk_inverse"),
+        },
+        Fun {
+            name: "polar_disk_inverse",
+            s: Box::new(move |x| o2(warp::polar_disk_inverse(pn(x)))),
+            p: Box::new(move |x| l2(warp::x8::polar_disk_inverse(pn8(x)))),
+            at_nan: all_nan("polar_disk_inverse"),
+        },
+        Fun {
+            name: "uniform_hemisphere_inverse",
+            s: Box::new(move |x| o2(warp::uniform_hemisphere_inverse(wn(x)))),
+            p: Box::new(move |x| l2(warp::x8::uniform_hemisphere_inverse(wn8(x)))),
+            at_nan: any(),
+        },
+        Fun {
+            name: "cosine_hemisphere_inverse",
+            s: Box::new(move |x| o2(warp::cosine_hemisphere_inverse(wn(x)))),
+            p: Box::new(move |x| l2(warp::x8::cosine_hemisphere_inverse(wn8(x)))),
+            at_nan: any(),
+        },
+        Fun {
+            name: "uniform_sphere_inverse",
+            s: Box::new(move |x| o2(warp::uniform_sphere_inverse(wn(x)))),
+            p: Box::new(move |x| l2(warp::x8::uniform_sphere_inverse(wn8(x)))),
+            at_nan: any(),
+        },
+        Fun {
+            name: "uniform_cone_inverse(w, 0.3)",
+            s: Box::new(move |x| o2(warp::uniform_cone_inverse(wn(x), 0.3))),
+            p: Box::new(move |x| l2(warp::x8::uniform_cone_inverse(wn8(x), s1(0.3)))),
+            at_nan: any(),
+        },
+        Fun {
+            name: "uniform_cone_inverse(w, h)",
+            s: Box::new(|x| o2(warp::uniform_cone_inverse(Vec3::new(0.1, 0.2, 0.97), x))),
+            p: Box::new(|x| {
+                l2(warp::x8::uniform_cone_inverse(
+                    s3(Vec3::new(0.1, 0.2, 0.97)),
+                    x,
+                ))
+            }),
+            at_nan: any(),
+        },
+        Fun {
+            name: "phong_lobe_inverse(w, 20)",
+            s: Box::new(move |x| o2(warp::phong_lobe_inverse(wn(x), 20.0))),
+            p: Box::new(move |x| l2(warp::x8::phong_lobe_inverse(wn8(x), s1(20.0)))),
+            at_nan: any(),
+        },
+        Fun {
+            name: "phong_lobe_inverse(w, n)",
+            s: Box::new(|x| o2(warp::phong_lobe_inverse(Vec3::new(0.1, 0.2, 0.97), x))),
+            p: Box::new(|x| {
+                l2(warp::x8::phong_lobe_inverse(
+                    s3(Vec3::new(0.1, 0.2, 0.97)),
+                    x,
+                ))
+            }),
+            at_nan: any(),
+        },
+        Fun {
+            name: "uniform_triangle_inverse",
+            s: Box::new(move |x| o2(warp::uniform_triangle_inverse(wn(x)))),
+            p: Box::new(move |x| l2(warp::x8::uniform_triangle_inverse(wn8(x)))),
+            at_nan: any(),
+        },
+        Fun {
+            name: "Frame::from_normal + to_world + to_local",
+            s: Box::new(move |x| {
+                let f = Frame::from_normal(Vec3::new(x, 0.6, 0.8));
+                let mut o = o3(f.t);
+                o.extend(o3(f.b));
+                o.extend(o3(f.to_world(Vec3::new(0.1, 0.2, 0.3))));
+                o.extend(o3(f.to_local(Vec3::new(0.1, 0.2, 0.3))));
+                o
+            }),
+            p: Box::new(move |x| {
+                let f = mcsample::frame::x8::Frame::from_normal(Vec3x8::new(x, s1(0.6), s1(0.8)));
+                let mut o = l3(f.t);
+                o.extend(l3(f.b));
+                o.extend(l3(f.to_world(s3(Vec3::new(0.1, 0.2, 0.3)))));
+                o.extend(l3(f.to_local(s3(Vec3::new(0.1, 0.2, 0.3)))));
+                o
+            }),
+            // "NaN components give NaN axes."
+            at_nan: Box::new(|o| {
+                let t_nan = o[0..3].iter().any(|x| x.is_nan());
+                let b_nan = o[3..6].iter().any(|x| x.is_nan());
+                check(t_nan && b_nan, || {
+                    format!("Frame at a NaN normal: t, b = {:?}", &o[0..6])
+                })
+            }),
+        },
+    ]
+}
+
+// ---------------------------------------------------------------------------------------------
+// Helpers for individual cases
+
+fn ulp(x: f32) -> f64 {
+    let x = x.abs();
+    (f32::from_bits(x.to_bits() + 1) - x) as f64
+}
+
+fn check(cond: bool, msg: impl FnOnce() -> String) -> Result<(), String> {
+    if cond { Ok(()) } else { Err(msg()) }
+}
+
+/// Runs every (name, result) and collects the failures.
+fn collect(results: impl IntoIterator<Item = Result<(), String>>) -> Result<(), String> {
+    let errs: Vec<String> = results.into_iter().filter_map(Result::err).collect();
+    match errs.len() {
+        0 => Ok(()),
+        n if n <= 40 => Err(errs.join("\n    ")),
+        n => Err(format!(
+            "{}\n    … and {} more",
+            errs[..12].join("\n    "),
+            n - 12
+        )),
+    }
+}
+
+/// The bad u components of the input contract.
+const BAD: [f32; 10] = [
+    -1.0,
+    f32::INFINITY,
+    f32::NEG_INFINITY,
+    1.0,
+    1e30,
+    f32::MAX,
+    -1e-45,
+    -0.0,
+    f32::MIN,
+    1.5,
+];
+
+fn clamp01(x: f32) -> f32 {
+    x.clamp(0.0, 1.0)
+}
+
+/// Degenerate triangles: coincident or collinear vertices, the shading point in the plane (inside
+/// the triangle, or not), a vertex at the shading point, non-finite vertices.
+fn degenerate_triangles() -> Vec<(&'static str, Vec3, Vec3, Vec3)> {
+    let (p, q, s) = (
+        Vec3::new(0.3, 0.1, 1.0),
+        Vec3::new(-0.2, 0.4, 0.9),
+        Vec3::new(0.1, -0.5, 1.1),
+    );
+    vec![
+        ("a = b", p, p, s),
+        ("a = b = c", p, p, p),
+        ("collinear", p, p * 2.0, p * 3.5),
+        ("collinear offset", p, p + (q - p) * 0.5, q),
+        (
+            "in the plane z = 0, shading point inside",
+            Vec3::new(1.0, 0.0, 0.0),
+            Vec3::new(0.0, 1.0, 0.0),
+            Vec3::new(-1.0, -1.0, 0.0),
+        ),
+        (
+            "in the plane z = 0, shading point outside",
+            Vec3::new(1.0, 0.0, 0.0),
+            Vec3::new(2.0, 0.0, 0.0),
+            Vec3::new(1.0, 1.0, 0.0),
+        ),
+        ("plane through the origin", p, q, p * 0.5 - q * 2.0),
+        ("vertex at the origin", Vec3::ZERO, q, s),
+        ("zero triangle", Vec3::ZERO, Vec3::ZERO, Vec3::ZERO),
+        ("infinite vertex", Vec3::new(f32::INFINITY, 0.0, 1.0), q, s),
+        ("NaN vertex", Vec3::new(f32::NAN, 0.0, 1.0), q, s),
+        (
+            "huge vertices",
+            Vec3::splat(f32::MAX),
+            Vec3::new(f32::MAX, -f32::MAX, 1.0),
+            s,
+        ),
+    ]
+}
+
+/// Rectangles seen edge-on: the shading point in the plane, beside the rectangle and inside it.
+fn edge_on_corners() -> [Vec3; 3] {
+    [
+        Vec3::new(-0.5, 1.0, 0.0),
+        Vec3::new(-0.5, -0.5, 0.0),
+        Vec3::new(2.0, 3.0, -0.0),
+    ]
+}
+
+type Case = (&'static str, Box<dyn Fn() -> Result<(), String>>);
+
+fn cases() -> Vec<Case> {
+    let mut c: Vec<Case> = Vec::new();
+
+    c.push((
+        "setup: the test geometry covers the spherical and the area paths",
+        Box::new(|| {
+            let tri = |t: [[f32; 3]; 3]| triangle_solid_angle_vos(d3(t[0]), d3(t[1]), d3(t[2]));
+            let rect = |r: [[f32; 3]; 3]| rectangle_solid_angle(d3(r[0]), d3(r[1]), d3(r[2]));
+            let (lo_t, hi_t) = (
+                warp::SPHERICAL_TRIANGLE_MIN_SR as f64,
+                warp::SPHERICAL_TRIANGLE_MAX_SR as f64,
+            );
+            let lo_r = warp::SPHERICAL_RECTANGLE_MIN_SR as f64;
+            let (l, s, t) = (tri(TRI_LARGE), tri(tri_small()), tri(tri_tiny()));
+            let (b, sm, tr) = (rect(RECT_BIG), rect(rect_small()), rect(rect_tiny()));
+            collect([
+                check(l > lo_t && l < hi_t && l > 4.0, || {
+                    format!("TRI_LARGE Ω = {l}")
+                }),
+                check(s > 1.5 * lo_t && s < 10.0 * lo_t, || {
+                    format!("tri_small Ω = {s}")
+                }),
+                check(t < 0.5 * lo_t, || format!("tri_tiny Ω = {t}")),
+                check(b > 1.0, || format!("RECT_BIG Ω = {b}")),
+                check(sm > 1.2 * lo_r && sm < 10.0 * lo_r, || {
+                    format!("rect_small Ω = {sm}")
+                }),
+                check(tr < 0.5 * lo_r, || format!("rect_tiny Ω = {tr}")),
+            ])
+        }),
+    ));
+
+    // 1.
+    c.push((
+        "1: concentric(½,½) = (0,0); cosine_hemisphere(½,½) = (0,0,1), pdf 1/π",
+        Box::new(|| {
+            let h = Vec2::splat(0.5);
+            let p = warp::concentric_disk(h);
+            let w = warp::cosine_hemisphere(h);
+            let pdf = warp::cosine_hemisphere_pdf(w.z);
+            collect([
+                check(p.x == 0.0 && p.y == 0.0, || {
+                    format!("concentric(½,½) = {p:?}")
+                }),
+                check(w == Vec3::Z, || format!("cosine_hemisphere(½,½) = {w:?}")),
+                check(pdf == std::f32::consts::FRAC_1_PI, || format!("pdf {pdf}")),
+            ])
+        }),
+    ));
+
+    // 2.
+    c.push((
+        "2: cosine_hemisphere on the square's boundary: z ≥ 0, finite",
+        Box::new(|| {
+            let mut r = vec![];
+            let w = warp::cosine_hemisphere(Vec2::new(ONE_MINUS_EPS, 0.3));
+            r.push(check(w.z >= 0.0 && w.is_finite(), || {
+                format!("(1−ε, 0.3) → {w:?}")
+            }));
+            let edge = [0.0, 1.0 / 16_777_216.0, ONE_MINUS_EPS, 1.0];
+            for i in 0..=4096 {
+                let t = (i as f32 / 4096.0).min(ONE_MINUS_EPS);
+                for &e in &edge {
+                    for u in [Vec2::new(e, t), Vec2::new(t, e)] {
+                        let w = warp::cosine_hemisphere(u);
+                        let pdf = warp::cosine_hemisphere_pdf(w.z);
+                        let ok = w.is_finite()
+                            && w.z >= 0.0
+                            && (w.length() - 1.0).abs() <= 1e-6
+                            && pdf >= 0.0
+                            && pdf.is_finite();
+                        r.push(check(ok, || format!("u={u:?} → {w:?}, pdf {pdf}")));
+                    }
+                }
+            }
+            collect(r)
+        }),
+    ));
+
+    // 3.
+    c.push((
+        "3: uniform_sphere(1e-8, u₁): r = 2.0e-4 within 1 %",
+        Box::new(|| {
+            collect((0..64).map(|i| {
+                let u = Vec2::new(1e-8, (i as f32 + 0.5) / 64.0);
+                let w = warp::uniform_sphere(u);
+                let r = (w.x as f64).hypot(w.y as f64);
+                check(rel_err(r, 2.0e-4) <= 0.01, || format!("u={u:?}: r = {r:e}"))
+            }))
+        }),
+    ));
+
+    // 4.
+    c.push((
+        "4: uniform_cone h=1e-7: pdf 1.591549e6, samples spread over the cap",
+        Box::new(|| {
+            let h = 1e-7f32;
+            let pdf = warp::uniform_cone_pdf(h);
+            let mut r = vec![check(rel_err(pdf as f64, 1.591549e6) <= 1e-6, || {
+                format!("pdf = {pdf}")
+            })];
+            let mut seen = std::collections::HashSet::new();
+            let mut max_sin: f64 = 0.0;
+            let n = 64;
+            for u in grid(n) {
+                let w = warp::uniform_cone(Vec2::new(u[0], u[1]), h);
+                let s = (w.x as f64).hypot(w.y as f64);
+                max_sin = max_sin.max(s);
+                seen.insert((w.x.to_bits(), w.y.to_bits(), w.z.to_bits()));
+                // sin θ = √(t(2 − t)) with t = u₀h: ≈ √(2u₀h) to 1e-3 relative.
+                let want = (2.0 * u[0] as f64 * h as f64).sqrt();
+                r.push(check(rel_err(s, want) <= 1e-3, || {
+                    format!("u={u:?}: sin θ = {s:e}, want {want:e}")
+                }));
+            }
+            let cap = (2.0 * h as f64).sqrt();
+            r.push(check(max_sin >= 0.99 * cap, || {
+                format!("largest sin θ {max_sin:e}, cap {cap:e}")
+            }));
+            r.push(check(seen.len() == n * n, || {
+                format!("{} distinct directions of {}", seen.len(), n * n)
+            }));
+            collect(r)
+        }),
+    ));
+
+    // 5.
+    c.push((
+        "5: cone from sin²θmax = 1e-8: h = 5e-9, finite pdf, sin θ = 1e-4·√u₀ within 4 ulp",
+        Box::new(|| {
+            let s2 = 1e-8f32;
+            let h = warp::cone_h_from_sin2(s2);
+            let pdf = warp::uniform_cone_pdf(h);
+            let mut r = vec![
+                check(rel_err(h as f64, 5e-9) <= 1e-6, || format!("h = {h:e}")),
+                check(
+                    pdf.is_finite() && rel_err(pdf as f64, uniform_cone_pdf(h as f64)) <= 1e-6,
+                    || format!("pdf = {pdf:e}"),
+                ),
+            ];
+            for u in grid(32)
+                .into_iter()
+                .chain([[1e-8, 0.3], [ONE_MINUS_EPS, 0.7]])
+            {
+                let w = warp::uniform_cone(Vec2::new(u[0], u[1]), h);
+                let s = (w.x as f64).hypot(w.y as f64);
+                let want = (s2 as f64 * u[0] as f64).sqrt();
+                let tol = 4.0 * ulp(want as f32);
+                r.push(check((s - want).abs() <= tol, || {
+                    format!("u={u:?}: sin θ = {s:e}, want {want:e} (±{tol:e})")
+                }));
+            }
+            collect(r)
+        }),
+    ));
+
+    // 6.
+    c.push((
+        "6: uniform_cone_inverse h=1e-7 recovers u₀ within 3e-7",
+        Box::new(|| {
+            let h = 1e-7f32;
+            let mut r = vec![];
+            for u in grid(64) {
+                // From the f64 reference direction rounded to f32, and from the crate's own.
+                let wr = uniform_cone(d2(u), h as f64);
+                let wr = Vec3::new(wr[0] as f32, wr[1] as f32, wr[2] as f32);
+                let wc = warp::uniform_cone(Vec2::new(u[0], u[1]), h);
+                for (src, w) in [("reference", wr), ("crate", wc)] {
+                    let back = warp::uniform_cone_inverse(w, h);
+                    r.push(check((back.x - u[0]).abs() as f64 <= 3e-7, || {
+                        format!("{src} w for u={u:?}: u₀ back = {}", back.x)
+                    }));
+                }
+            }
+            collect(r)
+        }),
+    ));
+
+    // 7.
+    c.push((
+        "7: phong_lobe n=1e6: ≥ 99 % distinct directions over 1e5 stratified u; peak pdf 1.5915e5",
+        Box::new(|| {
+            let n = 1e6f32;
+            let count = 100_000;
+            let mut seen = std::collections::HashSet::new();
+            for i in 0..count {
+                // u₀ stratified in 1e5 strata; u₁ along the golden-ratio sequence.
+                let u0 = ((i as f64 + 0.5) / count as f64) as f32;
+                let u1 = ((i as f64 * 0.618_033_988_749_894_9).fract()) as f32;
+                let w = warp::phong_lobe(Vec2::new(u0, u1), n);
+                seen.insert((w.x.to_bits(), w.y.to_bits(), w.z.to_bits()));
+            }
+            let peak = warp::phong_lobe_pdf(1.0, n);
+            collect([
+                check(seen.len() * 100 >= count * 99, || {
+                    format!("{} distinct directions of {count}", seen.len())
+                }),
+                check(rel_err(peak as f64, 1.5915e5) <= 1e-4, || {
+                    format!("peak pdf {peak}")
+                }),
+                check(
+                    rel_err(peak as f64, (n as f64 + 1.0) / std::f64::consts::TAU) <= 1e-5,
+                    || format!("peak pdf {peak}, want (n+1)/2π"),
+                ),
+            ])
+        }),
+    ));
+
+    // 8.
+    c.push((
+        "8: phong_lobe n=0 = uniform hemisphere; u₀ = 0 gives cos α = 0 and pdf 0",
+        Box::new(|| {
+            let mut r = vec![];
+            for u in grid(64).into_iter().chain(border()) {
+                let u = Vec2::new(u[0], u[1]);
+                let p = warp::phong_lobe(u, 0.0);
+                let h = warp::uniform_hemisphere(u);
+                // z = u₀ in both; the Phong form goes through ln and expm1, so allow rounding.
+                r.push(check((p.z - h.z).abs() <= 4e-7, || {
+                    format!("u={u:?}: phong z {} vs hemisphere z {}", p.z, h.z)
+                }));
+                r.push(check(dist3(dv3(p), dv3(h)) <= 2e-6, || {
+                    format!("u={u:?}: phong {p:?} vs hemisphere {h:?}")
+                }));
+                if p.z > 0.0 {
+                    let pdf = warp::phong_lobe_pdf(p.z, 0.0);
+                    r.push(check(
+                        rel_err(pdf as f64, warp::uniform_hemisphere_pdf() as f64) <= 1e-6,
+                        || format!("pdf n=0 at z={}: {pdf}", p.z),
+                    ));
+                }
+            }
+            for n in [0.0f32, 1.0, 20.0, 1e6] {
+                for u1 in [0.0f32, 0.3, ONE_MINUS_EPS] {
+                    let w = warp::phong_lobe(Vec2::new(0.0, u1), n);
+                    let pdf = warp::phong_lobe_pdf(w.z, n);
+                    r.push(check(w.z == 0.0 && pdf == 0.0 && w.is_finite(), || {
+                        format!("n={n} u=(0,{u1}): w={w:?} pdf={pdf}")
+                    }));
+                }
+                let pdf = warp::phong_lobe_pdf(0.0, n);
+                r.push(check(pdf == 0.0, || {
+                    format!("phong_lobe_pdf(0, {n}) = {pdf}")
+                }));
+            }
+            collect(r)
+        }),
+    ));
+
+    // 9.
+    c.push((
+        "9: uniform_triangle: b ≥ 0 for all u, including u₀ = u₁",
+        Box::new(|| {
+            let mut r = vec![];
+            let mut check_b = |u: Vec2| {
+                let b = warp::uniform_triangle(u);
+                if !(b.x >= 0.0 && b.y >= 0.0 && b.z >= 0.0) {
+                    r.push(Err(format!("u={u:?}: b = {b:?}")));
+                }
+            };
+            // The whole diagonal u₀ = u₁ of 24-bit values.
+            for k in 0..(1u32 << 24) {
+                let x = k as f32 / 16_777_216.0;
+                check_b(Vec2::new(x, x));
+            }
+            // Next to the diagonal and next to 1.
+            for k in 0..(1u32 << 16) {
+                let x = (k << 8) as f32 / 16_777_216.0;
+                let y = f32::from_bits(x.to_bits() + 1);
+                check_b(Vec2::new(x, y));
+                check_b(Vec2::new(y, x));
+            }
+            for i in 0..256u32 {
+                for j in 0..256u32 {
+                    check_b(Vec2::new(
+                        1.0 - i as f32 / 16_777_216.0,
+                        1.0 - j as f32 / 16_777_216.0,
+                    ));
+                }
+            }
+            for u in grid(512) {
+                check_b(Vec2::new(u[0], u[1]));
+            }
+            collect(r)
+        }),
+    ));
+
+    // 10.
+    c.push((
+        "10: spherical triangle with Ω ≈ 3e-7 sr: pdf within 1e-4 of 1/Ω",
+        Box::new(|| {
+            let mut r = vec![];
+            let dir = normalize([0.3, -0.2, 1.0]);
+            for d in [1.0f64, 1000.0] {
+                // An equilateral triangle facing the origin, Ω ≈ 3e-7.
+                let side = (4.0 * 3e-7 * d * d / 3f64.sqrt()).sqrt();
+                let (t, b) = duff_frame(dir);
+                let centre = scale(dir, d);
+                let vtx = |k: f64| {
+                    let ang = k * std::f64::consts::TAU / 3.0;
+                    let rr = side / 3f64.sqrt();
+                    f3(add(
+                        centre,
+                        add(scale(t, rr * ang.cos()), scale(b, rr * ang.sin())),
+                    ))
+                };
+                let (a, bb, c) = (vtx(0.0), vtx(1.0), vtx(2.0));
+                let omega = triangle_solid_angle_vos(d3(a), d3(bb), d3(c));
+                let (a, bb, c) = (v(a), v(bb), v(c));
+                r.push(check((omega - 3e-7).abs() < 1e-8, || {
+                    format!("setup Ω = {omega:e}")
+                }));
+                for u in grid(32) {
+                    let (w, pdf) = warp::spherical_triangle(Vec2::new(u[0], u[1]), a, bb, c);
+                    r.push(check(rel_err(pdf as f64 * omega, 1.0) <= 1e-4, || {
+                        format!("d={d} u={u:?}: pdf·Ω = {}", pdf as f64 * omega)
+                    }));
+                    let pf = warp::spherical_triangle_pdf(w, a, bb, c);
+                    r.push(check(
+                        pf == 0.0 || rel_err(pf as f64 * omega, 1.0) <= 1e-4,
+                        || format!("d={d} u={u:?}: pdf fn·Ω = {}", pf as f64 * omega),
+                    ));
+                }
+                let centroid = ((a + bb + c) / 3.0).normalize();
+                let pf = warp::spherical_triangle_pdf(centroid, a, bb, c);
+                r.push(check(rel_err(pf as f64 * omega, 1.0) <= 1e-4, || {
+                    format!("d={d}: pdf at the centroid ·Ω = {}", pf as f64 * omega)
+                }));
+            }
+            collect(r)
+        }),
+    ));
+
+    // 11.
+    c.push((
+        "11: degenerate spherical triangles: pdf 0, no NaN",
+        Box::new(|| {
+            let mut r = vec![];
+            let (p, q) = (Vec3::new(0.3, 0.1, 1.0), Vec3::new(-0.2, 0.4, 0.9));
+            for (label, a, b, c) in degenerate_triangles() {
+                for u in grid(4)
+                    .into_iter()
+                    .chain([[0.0, 0.0], [ONE_MINUS_EPS, ONE_MINUS_EPS]])
+                {
+                    let (w, pdf) = warp::spherical_triangle(Vec2::new(u[0], u[1]), a, b, c);
+                    r.push(check(pdf == 0.0 && w.is_finite(), || {
+                        format!("{label} u={u:?}: w={w:?} pdf={pdf}")
+                    }));
+                }
+                for w in [Vec3::Z, p.normalize(), q.normalize(), Vec3::NEG_Z, Vec3::X] {
+                    let pdf = warp::spherical_triangle_pdf(w, a, b, c);
+                    r.push(check(pdf == 0.0, || format!("{label}: pdf({w:?}) = {pdf}")));
+                    // The inverse is not specified for degenerate input: it must not panic.
+                    let _ = warp::spherical_triangle_inverse(w, a, b, c);
+                }
+            }
+            collect(r)
+        }),
+    ));
+
+    // 12.
+    c.push((
+        "12: Frame at n_z = −0.9999999: orthonormal to 1e-6; n = −z right-handed",
+        Box::new(|| {
+            let mut r = vec![];
+            for i in 0..1024 {
+                let phi = i as f32 / 1024.0 * std::f32::consts::TAU;
+                let z = -0.999_999_9f32;
+                let s = (1.0 - z as f64 * z as f64).sqrt() as f32;
+                let n = Vec3::new(s * phi.cos(), s * phi.sin(), z);
+                let f = Frame::from_normal(n);
+                let (t, b, nn) = (dv3(f.t), dv3(f.b), dv3(n));
+                let e = [
+                    (norm(t) - 1.0).abs(),
+                    (norm(b) - 1.0).abs(),
+                    dot(t, b).abs(),
+                    dot(t, nn).abs(),
+                    dot(b, nn).abs(),
+                    dist3(cross(t, b), nn),
+                ]
+                .into_iter()
+                .fold(0.0, f64::max);
+                r.push(check(e <= 1e-6, || format!("n={n:?}: error {e:e}")));
+            }
+            for n in [Vec3::NEG_Z, Vec3::Z] {
+                let f = Frame::from_normal(n);
+                let handed = f.t.cross(f.b);
+                r.push(check(
+                    handed == n && f.t.dot(f.b) == 0.0 && f.n == n,
+                    || format!("n={n:?}: t={:?} b={:?} t×b={handed:?}", f.t, f.b),
+                ));
+            }
+            collect(r)
+        }),
+    ));
+
+    // 14.
+    c.push((
+        "14: every warp at u = (1,1) and (1−ε, 1−ε): a finite point in its domain",
+        Box::new(|| {
+            let mut r = vec![];
+            for w in warps() {
+                for u in [
+                    Vec2::ONE,
+                    Vec2::splat(ONE_MINUS_EPS),
+                    Vec2::new(1.0, 0.0),
+                    Vec2::new(0.0, 1.0),
+                ] {
+                    let out = (w.s)(u);
+                    r.push((w.domain)(&out).map_err(|e| format!("{} u={u:?}: {e}", w.name)));
+                }
+            }
+            collect(r)
+        }),
+    ));
+
+    // 15.
+    c.push((
+        "15: every warp and pdf at NaN: no panic, same bits in both widths, documented value",
+        Box::new(|| {
+            let mut r = vec![];
+            let nan = f32::NAN;
+            for w in warps() {
+                let polygon = w.name.starts_with("spherical_");
+                for u in [Vec2::splat(nan), Vec2::new(nan, 0.5), Vec2::new(0.5, nan)] {
+                    let s = (w.s)(u);
+                    let p = (w.p)(Vec2x8::splat(u));
+                    for lane in 0..8 {
+                        r.push(same_bits(&format!("{} u={u:?}", w.name), &s, &p, lane));
+                    }
+                    // "NaN in gives NaN out, always the canonical quiet NaN."
+                    r.push(canonical(&format!("{} u={u:?}", w.name), &s));
+                    let doc = if polygon {
+                        // "NaN u gives a pdf of 0" and "a fixed finite direction": +z for the
+                        // triangle, the corner for the rectangle.
+                        let fixed = w.fixed.unwrap_or(Vec3::NAN);
+                        check(s[3] == 0.0 && Vec3::new(s[0], s[1], s[2]) == fixed, || {
+                            format!("{} u={u:?}: {s:?}, documented pdf 0 at {fixed:?}", w.name)
+                        })
+                    } else if w.name.starts_with("tent") {
+                        // tent reads u.x only.
+                        check(s[0].is_nan() == u.x.is_nan(), || {
+                            format!("{} u={u:?}: {s:?}", w.name)
+                        })
+                    } else {
+                        // "NaN in u gives NaN in every coordinate of the result" (either
+                        // coordinate of u).
+                        check(s.iter().all(|x| x.is_nan()), || {
+                            format!("{} u={u:?}: {s:?} is not all NaN", w.name)
+                        })
+                    };
+                    r.push(doc);
+                }
+            }
+            for f in funs() {
+                let s = (f.s)(nan);
+                let p = (f.p)(s1(nan));
+                for lane in 0..8 {
+                    r.push(same_bits(f.name, &s, &p, lane));
+                }
+                r.push(canonical(f.name, &s));
+                r.push((f.at_nan)(&s));
+            }
+            // constant pdfs: same bits.
+            for (name, s, p) in [
+                (
+                    "uniform_disk_pdf",
+                    warp::uniform_disk_pdf(),
+                    warp::x8::uniform_disk_pdf(),
+                ),
+                (
+                    "uniform_hemisphere_pdf",
+                    warp::uniform_hemisphere_pdf(),
+                    warp::x8::uniform_hemisphere_pdf(),
+                ),
+                (
+                    "uniform_sphere_pdf",
+                    warp::uniform_sphere_pdf(),
+                    warp::x8::uniform_sphere_pdf(),
+                ),
+            ] {
+                for lane in 0..8 {
+                    r.push(same_bits(name, &[s], &[p.to_array()], lane));
+                }
+            }
+            collect(r)
+        }),
+    ));
+
+    // 15b: bad inputs in mixed lanes: each lane equals the scalar on its own input.
+    c.push((
+        "15b: mixed bad inputs across lanes: lane i = scalar on lane i's input, bit for bit",
+        Box::new(|| {
+            let mut r = vec![];
+            let vals = [
+                f32::NAN,
+                -1.0,
+                f32::INFINITY,
+                f32::NEG_INFINITY,
+                1.0,
+                ONE_MINUS_EPS,
+                -0.0,
+                0.5,
+            ];
+            let lanes: [Vec2; 8] =
+                std::array::from_fn(|i| Vec2::new(vals[i], vals[(i * 3 + 1) % 8]));
+            let packet = Vec2x8::from(lanes);
+            for w in warps() {
+                let p = (w.p)(packet);
+                for (i, &u) in lanes.iter().enumerate() {
+                    r.push(same_bits(&format!("{} u={u:?}", w.name), &(w.s)(u), &p, i));
+                }
+            }
+            for f in funs() {
+                let p = (f.p)(F32x8::new(vals));
+                for (i, &x) in vals.iter().enumerate() {
+                    r.push(same_bits(&format!("{} x={x}", f.name), &(f.s)(x), &p, i));
+                }
+            }
+            collect(r)
+        }),
+    ));
+
+    // 17.
+    c.push((
+        "17: rectangle seen edge-on: pdf 0 or an exact area fallback, never NaN",
+        Box::new(|| {
+            let mut r = vec![];
+            let ex = Vec3::new(1.0, 0.0, 0.0);
+            let ey = Vec3::new(0.0, 1.0, 0.0);
+            for corner in edge_on_corners() {
+                for u in grid(8) {
+                    let (p, pdf) = warp::spherical_rectangle(Vec2::new(u[0], u[1]), corner, ex, ey);
+                    r.push(check(pdf == 0.0 && p.is_finite(), || {
+                        format!("corner {corner:?} u={u:?}: p={p:?} pdf={pdf}")
+                    }));
+                }
+                for w in [
+                    Vec3::Z,
+                    Vec3::X,
+                    Vec3::new(0.0, 1.0, 0.0),
+                    Vec3::new(0.6, 0.8, 0.0),
+                ] {
+                    let pdf = warp::spherical_rectangle_pdf(w, corner, ex, ey);
+                    r.push(check(pdf == 0.0, || {
+                        format!("corner {corner:?}: pdf({w:?}) = {pdf}")
+                    }));
+                }
+            }
+            // Nearly edge-on: pdf 0 or the exact converted pdf; never NaN or ∞.
+            for z in [1e-3f32, 1e-6, 1e-12, 1e-30, 1e-40] {
+                let corner = Vec3::new(-0.5, 1.0, z);
+                let n = cross(dv3(ex), dv3(ey));
+                for u in grid(8) {
+                    let (p, pdf) = warp::spherical_rectangle(Vec2::new(u[0], u[1]), corner, ex, ey);
+                    let w = normalize(dv3(p));
+                    let want = area_pdf_to_solid_angle(w, dv3(corner), n, 1.0);
+                    let ok = pdf.is_finite()
+                        && p.is_finite()
+                        && (pdf == 0.0 || rel_err(pdf as f64, want) <= 1e-4);
+                    r.push(check(ok, || {
+                        format!("z={z:e} u={u:?}: p={p:?} pdf={pdf:e}, converted {want:e}")
+                    }));
+                }
+            }
+            collect(r)
+        }),
+    ));
+
+    // Documented: u is clamped to [0, 1]², so bad u gives the same point as the clamped u, and a
+    // finite point of the domain.
+    c.push((
+        "doc: u = −1, ±∞, 1, huge, −0 are clamped: same point as clamped u, in the domain",
+        Box::new(|| {
+            let mut r = vec![];
+            let mut pairs = vec![];
+            for &a in &BAD {
+                for &b in BAD.iter().chain(&[0.3f32]) {
+                    pairs.push(Vec2::new(a, b));
+                    pairs.push(Vec2::new(b, a));
+                }
+            }
+            for w in warps() {
+                for &u in &pairs {
+                    let out = (w.s)(u);
+                    r.push((w.domain)(&out).map_err(|e| format!("{} u={u:?}: {e}", w.name)));
+                    let clamped = (w.s)(Vec2::new(clamp01(u.x), clamp01(u.y)));
+                    r.push(check(out == clamped, || {
+                        format!("{} u={u:?}: {out:?} ≠ clamped {clamped:?}", w.name)
+                    }));
+                }
+            }
+            collect(r)
+        }),
+    ));
+
+    c.push((
+        "doc: cone h = 0 and h < 0: pdf 0, samples on the axis; h > 2 clamps to 2",
+        Box::new(|| {
+            let mut r = vec![];
+            for h in [0.0f32, -0.0, -1.0, f32::NEG_INFINITY] {
+                let pdf = warp::uniform_cone_pdf(h);
+                r.push(check(pdf == 0.0, || {
+                    format!("uniform_cone_pdf({h}) = {pdf}")
+                }));
+                for u in grid(4) {
+                    let w = warp::uniform_cone(Vec2::new(u[0], u[1]), h);
+                    r.push(check(w.x == 0.0 && w.y == 0.0 && w.z == 1.0, || {
+                        format!("uniform_cone({u:?}, {h}) = {w:?}")
+                    }));
+                }
+            }
+            for h in [2.5f32, 1e30, f32::INFINITY] {
+                r.push(check(
+                    warp::uniform_cone_pdf(h) == warp::uniform_cone_pdf(2.0),
+                    || format!("uniform_cone_pdf({h}) = {}", warp::uniform_cone_pdf(h)),
+                ));
+                for u in grid(4) {
+                    let u = Vec2::new(u[0], u[1]);
+                    r.push(check(
+                        warp::uniform_cone(u, h) == warp::uniform_cone(u, 2.0),
+                        || format!("uniform_cone({u:?}, {h}) ≠ h = 2"),
+                    ));
+                }
+            }
+            // The h helpers clamp.
+            let hs = [
+                ("cone_h_from_sin2(−1)", warp::cone_h_from_sin2(-1.0), 0.0),
+                ("cone_h_from_sin2(2)", warp::cone_h_from_sin2(2.0), 1.0),
+                ("cone_h_from_sin2(1)", warp::cone_h_from_sin2(1.0), 1.0),
+                ("cone_h_from_sin2(0)", warp::cone_h_from_sin2(0.0), 0.0),
+                ("cone_h_from_cos(2)", warp::cone_h_from_cos(2.0), 0.0),
+                ("cone_h_from_cos(−3)", warp::cone_h_from_cos(-3.0), 2.0),
+                ("cone_h_from_cos(−1)", warp::cone_h_from_cos(-1.0), 2.0),
+            ];
+            for (name, got, want) in hs {
+                r.push(check(got == want, || {
+                    format!("{name} = {got}, want {want}")
+                }));
+            }
+            collect(r)
+        }),
+    ));
+
+    c.push((
+        "doc: Phong n is clamped to [0, 1e20]; the pdf is 0 at and below the horizon",
+        Box::new(|| {
+            let mut r = vec![];
+            for u in grid(8) {
+                let u = Vec2::new(u[0], u[1]);
+                r.push(check(
+                    warp::phong_lobe(u, -3.0) == warp::phong_lobe(u, 0.0),
+                    || format!("phong_lobe({u:?}, −3) ≠ n = 0"),
+                ));
+                let big = warp::phong_lobe(u, f32::INFINITY);
+                r.push(check(
+                    big == warp::phong_lobe(u, 1e20) && big.is_finite(),
+                    || format!("phong_lobe({u:?}, ∞) = {big:?}"),
+                ));
+            }
+            for c in [0.1f32, 0.5, 1.0] {
+                r.push(check(
+                    warp::phong_lobe_pdf(c, -3.0) == warp::phong_lobe_pdf(c, 0.0),
+                    || format!("phong_lobe_pdf({c}, −3)"),
+                ));
+                let p = warp::phong_lobe_pdf(c, f32::INFINITY);
+                r.push(check(p.is_finite() || p == f32::INFINITY, || {
+                    format!("pdf({c}, ∞) = {p}")
+                }));
+            }
+            for c in [0.0f32, -0.0, -0.5, -1.0, f32::NEG_INFINITY] {
+                for n in [0.0f32, 1.0, 20.0] {
+                    let p = warp::phong_lobe_pdf(c, n);
+                    r.push(check(p == 0.0, || {
+                        format!("phong_lobe_pdf({c}, {n}) = {p}")
+                    }));
+                }
+            }
+            collect(r)
+        }),
+    ));
+
+    c.push((
+        "doc: pdfs are 0 outside their support",
+        Box::new(|| {
+            let mut r = vec![];
+            for x in [0.0f32, -0.0, -0.5, -1.0, f32::NEG_INFINITY] {
+                let p = warp::cosine_hemisphere_pdf(x);
+                r.push(check(p == 0.0, || {
+                    format!("cosine_hemisphere_pdf({x}) = {p}")
+                }));
+            }
+            for x in [1.0f32, -1.0, 1.5, -1.5, f32::INFINITY, f32::NEG_INFINITY] {
+                let p = warp::tent_pdf(x);
+                r.push(check(p == 0.0, || format!("tent_pdf({x}) = {p}")));
+            }
+            for b in [
+                Vec2::new(0.7, 0.7),
+                Vec2::new(-0.1, 0.5),
+                Vec2::new(0.5, -1e-30),
+                Vec2::new(f32::INFINITY, 0.0),
+            ] {
+                let p = warp::uniform_triangle_pdf(b);
+                r.push(check(p == 0.0, || {
+                    format!("uniform_triangle_pdf({b:?}) = {p}")
+                }));
+            }
+            let t = tri_small().map(v);
+            let rc = RECT_BIG.map(v);
+            for w in [Vec3::NEG_Z, Vec3::X, -(t[0] + t[1] + t[2]).normalize()] {
+                let p = warp::spherical_triangle_pdf(w, t[0], t[1], t[2]);
+                r.push(check(p == 0.0, || {
+                    format!("spherical_triangle_pdf({w:?}) = {p}")
+                }));
+                let p = warp::spherical_rectangle_pdf(w, rc[0], rc[1], rc[2]);
+                r.push(check(p == 0.0, || {
+                    format!("spherical_rectangle_pdf({w:?}) = {p}")
+                }));
+            }
+            collect(r)
+        }),
+    ));
+
+    c.push((
+        "doc: degenerate rectangles (zero edge, edge-on): pdf 0, point = corner",
+        Box::new(|| {
+            let mut r = vec![];
+            let corner = Vec3::new(-0.5, -0.5, 1.0);
+            let cases = [
+                ("ex = 0", Vec3::ZERO, Vec3::Y),
+                ("ey = 0", Vec3::X, Vec3::ZERO),
+                ("both 0", Vec3::ZERO, Vec3::ZERO),
+                ("NaN edge", Vec3::new(f32::NAN, 0.0, 0.0), Vec3::Y),
+                ("infinite edge", Vec3::new(f32::INFINITY, 0.0, 0.0), Vec3::Y),
+            ];
+            for (label, ex, ey) in cases {
+                for u in grid(4) {
+                    let (p, pdf) = warp::spherical_rectangle(Vec2::new(u[0], u[1]), corner, ex, ey);
+                    r.push(check(pdf == 0.0 && p == corner, || {
+                        format!("{label} u={u:?}: p={p:?} pdf={pdf}")
+                    }));
+                }
+                let pdf = warp::spherical_rectangle_pdf(Vec3::Z, corner, ex, ey);
+                r.push(check(pdf == 0.0, || format!("{label}: pdf fn = {pdf}")));
+            }
+            collect(r)
+        }),
+    ));
+
+    c.push((
+        "doc: inverses: p = 0 ↦ (½, ½); azimuth fractions stay below 1; zero normal gives the +z frame",
+        Box::new(|| {
+            let mut r = vec![];
+            let u = warp::concentric_disk_inverse(Vec2::ZERO);
+            r.push(check(u == Vec2::splat(0.5), || format!("concentric_disk_inverse(0) = {u:?}")));
+            let tiny = -1e-30f32;
+            let az = [
+                ("polar_disk_inverse", warp::polar_disk_inverse(Vec2::new(1.0, tiny)).y),
+                ("uniform_sphere_inverse", warp::uniform_sphere_inverse(Vec3::new(1.0, tiny, 0.0)).y),
+                ("uniform_hemisphere_inverse", warp::uniform_hemisphere_inverse(Vec3::new(1.0, tiny, 0.0)).y),
+                ("uniform_cone_inverse", warp::uniform_cone_inverse(Vec3::new(0.1, tiny, 0.99), 0.3).y),
+                ("phong_lobe_inverse", warp::phong_lobe_inverse(Vec3::new(0.1, tiny, 0.99), 5.0).y),
+            ];
+            for (name, y) in az {
+                r.push(check((0.0..1.0).contains(&y), || format!("{name}: azimuth {y}")));
+            }
+            let f = Frame::from_normal(Vec3::ZERO);
+            r.push(check(f.t == Vec3::X && f.b == Vec3::Y, || {
+                format!("zero normal: t={:?} b={:?}", f.t, f.b)
+            }));
+            let x = warp::tent_inverse(5.0);
+            let y = warp::tent_inverse(-5.0);
+            r.push(check(x == 1.0 && y == 0.0, || format!("tent_inverse(±5) = {x}, {y}")));
+            collect(r)
+        }),
+    ));
+
+    c.push((
+        "doc: degenerate triangle → direction +z; edge-on rectangle → point = corner",
+        Box::new(|| {
+            let mut r = vec![];
+            for (label, a, b, c) in degenerate_triangles() {
+                for u in grid(2) {
+                    let (w, pdf) = warp::spherical_triangle(Vec2::new(u[0], u[1]), a, b, c);
+                    r.push(check(w == Vec3::Z, || {
+                        format!("triangle {label} u={u:?}: w={w:?} (pdf {pdf}), documented +z")
+                    }));
+                }
+            }
+            let (ex, ey) = (Vec3::X, Vec3::Y);
+            for corner in edge_on_corners() {
+                for u in grid(2) {
+                    let (p, pdf) = warp::spherical_rectangle(Vec2::new(u[0], u[1]), corner, ex, ey);
+                    r.push(check(p == corner, || {
+                        format!(
+                            "edge-on rectangle at {corner:?} u={u:?}: p={p:?} (pdf {pdf}), documented the corner"
+                        )
+                    }));
+                }
+            }
+            collect(r)
+        }),
+    ));
+
+    c
+}
+
+#[test]
+fn hard_cases() {
+    let cases = cases();
+    let total = cases.len();
+    let mut failures = Vec::new();
+    for (name, f) in cases {
+        match catch_unwind(AssertUnwindSafe(f)) {
+            Ok(Ok(())) => println!("ok    {name}"),
+            Ok(Err(e)) => {
+                println!("FAIL  {name}");
+                failures.push(format!("{name}:\n    {e}"));
+            }
+            Err(p) => {
+                let msg = p
+                    .downcast_ref::<String>()
+                    .cloned()
+                    .or_else(|| p.downcast_ref::<&str>().map(|s| s.to_string()))
+                    .unwrap_or_default();
+                println!("PANIC {name}");
+                failures.push(format!("{name}: panicked: {msg}"));
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} of {total} hard cases failed:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}

@@ -115,8 +115,11 @@ fn time_pair(
 /// inlined into the loop (a call through `dyn Fn` per point would cost more than a cheap warp).
 struct Form<'a, I, O> {
     one: Box<dyn Fn(I) -> O + 'a>,
-    batch: Box<dyn Fn(&[I], &mut [O]) + 'a>,
+    batch: Batch<'a, I, O>,
 }
+
+/// A warp applied over a slice of inputs into a slice of outputs.
+type Batch<'a, I, O> = Box<dyn Fn(&[I], &mut [O]) + 'a>;
 
 impl<'a, I: Copy + 'a, O: 'a> Form<'a, I, O> {
     fn new(f: impl Fn(I) -> O + Clone + 'a) -> Self {

@@ -1,4 +1,5 @@
-//! The lane abstraction: every algorithm in the crate is written once over [`Lane`].
+//! The lane abstraction: every algorithm in the crate is written once over [`Lane`] (and
+//! [`Math`](crate::math::Math), which adds the transcendental functions).
 //!
 //! Three instances exist:
 //!
@@ -133,24 +134,6 @@ pub trait Lane:
     fn is_finite(self) -> Self::Mask {
         self.abs().lt(Self::c(f64::INFINITY))
     }
-
-    /// sin and cos. See [`crate::math`] for the domain and error.
-    fn sin_cos(self) -> (Self, Self);
-    /// sin and cos of 2π·self, with exact range reduction in `self`.
-    fn sincos_2pi(self) -> (Self, Self);
-    /// sin and cos of (π/4)·self for self in [−1, 1], with no range reduction.
-    fn sincos_pi4(self) -> (Self, Self);
-    /// Four-quadrant arctangent of `self / x`, in [−π, π].
-    fn atan2(self, x: Self) -> Self;
-    fn asin(self) -> Self;
-    fn acos(self) -> Self;
-    /// Natural logarithm.
-    fn ln(self) -> Self;
-    fn exp(self) -> Self;
-    /// ln(1 + self), accurate near 0.
-    fn ln_1p(self) -> Self;
-    /// exp(self) − 1, accurate near 0.
-    fn exp_m1(self) -> Self;
 }
 
 /// Lanes of IEEE single precision, with access to their bits: the instances that run the crate's
@@ -167,53 +150,6 @@ pub trait Lane32: Lane {
     fn u(x: u32) -> Self::U;
     fn shl(u: Self::U, n: u32) -> Self::U;
     fn shr(u: Self::U, n: u32) -> Self::U;
-}
-
-/// The math methods of the f32 and F32x8 lanes: both run the crate's own generic polynomials,
-/// which is what makes their results agree bit for bit.
-macro_rules! own_math {
-    () => {
-        #[inline(always)]
-        fn sin_cos(self) -> (Self, Self) {
-            crate::math::trig::sin_cos(self)
-        }
-        #[inline(always)]
-        fn sincos_2pi(self) -> (Self, Self) {
-            crate::math::trig::sincos_2pi(self)
-        }
-        #[inline(always)]
-        fn sincos_pi4(self) -> (Self, Self) {
-            crate::math::trig::sincos_pi4(self)
-        }
-        #[inline(always)]
-        fn atan2(self, x: Self) -> Self {
-            crate::math::atan::atan2(self, x)
-        }
-        #[inline(always)]
-        fn asin(self) -> Self {
-            crate::math::asin::asin(self)
-        }
-        #[inline(always)]
-        fn acos(self) -> Self {
-            crate::math::asin::acos(self)
-        }
-        #[inline(always)]
-        fn ln(self) -> Self {
-            crate::math::log::ln(self)
-        }
-        #[inline(always)]
-        fn exp(self) -> Self {
-            crate::math::exp::exp(self)
-        }
-        #[inline(always)]
-        fn ln_1p(self) -> Self {
-            crate::math::log::ln_1p(self)
-        }
-        #[inline(always)]
-        fn exp_m1(self) -> Self {
-            crate::math::exp::exp_m1(self)
-        }
-    };
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -275,7 +211,6 @@ impl Lane for f32 {
     fn select(m: bool, a: Self, b: Self) -> Self {
         if m { a } else { b }
     }
-    own_math!();
 }
 
 impl Lane32 for f32 {
@@ -355,7 +290,6 @@ impl Lane for F32x8 {
     fn select(m: F32x8, a: Self, b: Self) -> Self {
         m.select(a, b)
     }
-    own_math!();
 }
 
 impl Lane32 for F32x8 {
@@ -432,39 +366,6 @@ impl Lane for f64 {
     #[inline(always)]
     fn select(m: bool, a: Self, b: Self) -> Self {
         if m { a } else { b }
-    }
-    fn sin_cos(self) -> (Self, Self) {
-        libm::sincos(self)
-    }
-    fn sincos_2pi(self) -> (Self, Self) {
-        // Reduce exactly in u before scaling, as the f32 instances do, so that u = 1 gives
-        // exactly (0, 1) in the reference too.
-        let r = self - libm::round(self);
-        libm::sincos(core::f64::consts::TAU * r)
-    }
-    fn sincos_pi4(self) -> (Self, Self) {
-        libm::sincos(core::f64::consts::FRAC_PI_4 * self)
-    }
-    fn atan2(self, x: Self) -> Self {
-        libm::atan2(self, x)
-    }
-    fn asin(self) -> Self {
-        libm::asin(self)
-    }
-    fn acos(self) -> Self {
-        libm::acos(self)
-    }
-    fn ln(self) -> Self {
-        libm::log(self)
-    }
-    fn exp(self) -> Self {
-        libm::exp(self)
-    }
-    fn ln_1p(self) -> Self {
-        libm::log1p(self)
-    }
-    fn exp_m1(self) -> Self {
-        libm::expm1(self)
     }
 }
 

@@ -10,8 +10,8 @@
 //!
 //! | module | role |
 //! |---|---|
-//! | [`lane`] | the [`Lane`](lane::Lane) trait over `f32`, [`F32x8`](x8::F32x8) and `f64`, and the generic vectors [`V2`](lane::V2), [`V3`](lane::V3) |
-//! | [`math`] | the crate's own transcendental functions, with their ulp bounds |
+//! | [`lane`] | the [`Lane`](lane::Lane) trait (arithmetic, masks, selects) over `f32`, [`F32x8`](x8::F32x8) and `f64`, and the generic vectors [`V2`](lane::V2), [`V3`](lane::V3) |
+//! | [`math`] | the [`Math`](math::Math) trait: the crate's own transcendental functions for the f32 lanes, with their ulp bounds, and libm for f64 |
 //! | [`x8`] | the public packet types |
 //! | [`frame`] | orthonormal frames from a normal |
 //! | [`warp`] | square → disk, hemisphere, sphere, cone, Phong lobe, triangle, spherical triangle and rectangle, tent |
@@ -19,7 +19,8 @@
 //!
 //! # One source, two widths
 //!
-//! Each algorithm is one generic function over [`Lane`](lane::Lane). The scalar faces
+//! Each algorithm is one generic function over [`Math`](math::Math) (a [`Lane`](lane::Lane) with
+//! transcendental functions). The scalar faces
 //! (`warp::cosine_hemisphere(Vec2) -> Vec3`) and the packet faces
 //! (`warp::x8::cosine_hemisphere(Vec2x8) -> Vec3x8`) instantiate it, and lane *i* of a packet
 //! result equals the scalar result on lane *i*'s input, bit for bit, in any one build: the
@@ -53,3 +54,8 @@ pub mod x8;
 
 #[cfg(feature = "std")]
 pub mod verify;
+
+/// The README's examples run as doctests, so they stay true.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

@@ -5,8 +5,8 @@
 
 use glam::{Vec2, Vec3};
 
-use crate::lane::{V2, V3};
 pub use crate::lane::{F32x8, U32x8};
+use crate::lane::{V2, V3};
 /// Eight 2D vectors, one per lane.
 pub type Vec2x8 = V2<F32x8>;
 /// Eight 3D vectors, one per lane.

@@ -16,7 +16,7 @@
 
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
 
-use mcsample::lane::Lane;
+use mcsample::math::Math;
 use mcsample::x8::F32x8;
 
 // ---------------------------------------------------------------------------------------------
@@ -283,7 +283,7 @@ fn ulp_sin_cos() {
         }
         let (mut ws, mut wc) = (Worst::NONE, Worst::NONE);
         for x in pts {
-            let (s, c) = <f32 as Lane>::sin_cos(x);
+            let (s, c) = <f32 as Math>::sin_cos(x);
             let (rs, rc) = (x as f64).sin_cos();
             ws.add(ulp_err(s, rs), (x, 0.0));
             wc.add(ulp_err(c, rc), (x, 0.0));
@@ -311,7 +311,7 @@ fn ulp_sincos_2pi() {
         }
         let (mut ws, mut wc) = (Worst::NONE, Worst::NONE);
         for u in pts {
-            let (s, c) = <f32 as Lane>::sincos_2pi(u);
+            let (s, c) = <f32 as Math>::sincos_2pi(u);
             let (rs, rc) = ref_2pi(u);
             ws.add(ulp_err(s, rs), (u, 0.0));
             wc.add(ulp_err(c, rc), (u, 0.0));
@@ -328,7 +328,7 @@ fn ulp_sincos_pi4() {
         let pts = unary_points(t, n, rng, -1.0, 1.0, &[]);
         let (mut ws, mut wc) = (Worst::NONE, Worst::NONE);
         for x in pts {
-            let (s, c) = <f32 as Lane>::sincos_pi4(x);
+            let (s, c) = <f32 as Math>::sincos_pi4(x);
             let (rs, rc) = (FRAC_PI_4 * x as f64).sin_cos();
             ws.add(ulp_err(s, rs), (x, 0.0));
             wc.add(ulp_err(c, rc), (x, 0.0));
@@ -343,7 +343,7 @@ fn atan2_points(n_total: u64) -> Worst {
     let w = par(n_total, |t, n, rng| {
         let mut w = Worst::NONE;
         let mut one = |y: f32, x: f32| {
-            let a = <f32 as Lane>::atan2(y, x);
+            let a = <f32 as Math>::atan2(y, x);
             w.add(ulp_err(a, (y as f64).atan2(x as f64)), (y, x));
         };
         // Sweeps along the lines y = ±1 and x = ±1 (every ratio scale), split by parity.
@@ -396,8 +396,8 @@ fn ulp_asin_acos() {
         let pts = unary_points(t, n, rng, -1.0, 1.0, &[(0.45, 0.6), (0.9, 1.0)]);
         let (mut ws, mut wc) = (Worst::NONE, Worst::NONE);
         for x in pts {
-            ws.add(ulp_err(<f32 as Lane>::asin(x), (x as f64).asin()), (x, 0.0));
-            wc.add(ulp_err(<f32 as Lane>::acos(x), (x as f64).acos()), (x, 0.0));
+            ws.add(ulp_err(<f32 as Math>::asin(x), (x as f64).asin()), (x, 0.0));
+            wc.add(ulp_err(<f32 as Math>::acos(x), (x as f64).acos()), (x, 0.0));
         }
         vec![ws, wc]
     });
@@ -411,7 +411,7 @@ fn ulp_ln() {
         let pts = unary_points(t, n, rng, 0.0, f32::MAX, &[(0.5, 2.0), (0.0, 1e-37)]);
         let mut w = Worst::NONE;
         for x in pts {
-            w.add(ulp_err(<f32 as Lane>::ln(x), (x as f64).ln()), (x, 0.0));
+            w.add(ulp_err(<f32 as Math>::ln(x), (x as f64).ln()), (x, 0.0));
         }
         vec![w]
     });
@@ -426,7 +426,7 @@ fn ulp_ln_1p() {
         let mut w = Worst::NONE;
         for x in pts {
             w.add(
-                ulp_err(<f32 as Lane>::ln_1p(x), (x as f64).ln_1p()),
+                ulp_err(<f32 as Math>::ln_1p(x), (x as f64).ln_1p()),
                 (x, 0.0),
             );
         }
@@ -448,7 +448,7 @@ fn ulp_exp() {
         );
         let mut w = Worst::NONE;
         for x in pts {
-            w.add(ulp_err(<f32 as Lane>::exp(x), (x as f64).exp()), (x, 0.0));
+            w.add(ulp_err(<f32 as Math>::exp(x), (x as f64).exp()), (x, 0.0));
         }
         vec![w]
     });
@@ -469,7 +469,7 @@ fn ulp_exp_m1() {
         let mut w = Worst::NONE;
         for x in pts {
             w.add(
-                ulp_err(<f32 as Lane>::exp_m1(x), (x as f64).exp_m1()),
+                ulp_err(<f32 as Math>::exp_m1(x), (x as f64).exp_m1()),
                 (x, 0.0),
             );
         }
@@ -531,7 +531,7 @@ fn exhaustive_unary() {
             -SIN_COS_DOMAIN,
             SIN_COS_DOMAIN,
             Box::new(|x| {
-                let (s, c) = <f32 as Lane>::sin_cos(x);
+                let (s, c) = <f32 as Math>::sin_cos(x);
                 let (rs, rc) = (x as f64).sin_cos();
                 vec![ulp_err(s, rs), ulp_err(c, rc)]
             }),
@@ -541,7 +541,7 @@ fn exhaustive_unary() {
             -16_777_216.0,
             16_777_216.0,
             Box::new(|u| {
-                let (s, c) = <f32 as Lane>::sincos_2pi(u);
+                let (s, c) = <f32 as Math>::sincos_2pi(u);
                 let (rs, rc) = ref_2pi(u);
                 vec![ulp_err(s, rs), ulp_err(c, rc)]
             }),
@@ -551,7 +551,7 @@ fn exhaustive_unary() {
             -1.0,
             1.0,
             Box::new(|x| {
-                let (s, c) = <f32 as Lane>::sincos_pi4(x);
+                let (s, c) = <f32 as Math>::sincos_pi4(x);
                 let (rs, rc) = (FRAC_PI_4 * x as f64).sin_cos();
                 vec![ulp_err(s, rs), ulp_err(c, rc)]
             }),
@@ -562,8 +562,8 @@ fn exhaustive_unary() {
             1.0,
             Box::new(|x| {
                 vec![
-                    ulp_err(<f32 as Lane>::asin(x), (x as f64).asin()),
-                    ulp_err(<f32 as Lane>::acos(x), (x as f64).acos()),
+                    ulp_err(<f32 as Math>::asin(x), (x as f64).asin()),
+                    ulp_err(<f32 as Math>::acos(x), (x as f64).acos()),
                 ]
             }),
         ),
@@ -571,25 +571,25 @@ fn exhaustive_unary() {
             "ln",
             0.0,
             f32::MAX,
-            Box::new(|x| vec![ulp_err(<f32 as Lane>::ln(x), (x as f64).ln())]),
+            Box::new(|x| vec![ulp_err(<f32 as Math>::ln(x), (x as f64).ln())]),
         ),
         (
             "ln_1p",
             -1.0,
             f32::MAX,
-            Box::new(|x| vec![ulp_err(<f32 as Lane>::ln_1p(x), (x as f64).ln_1p())]),
+            Box::new(|x| vec![ulp_err(<f32 as Math>::ln_1p(x), (x as f64).ln_1p())]),
         ),
         (
             "exp",
             -f32::MAX,
             f32::MAX,
-            Box::new(|x| vec![ulp_err(<f32 as Lane>::exp(x), (x as f64).exp())]),
+            Box::new(|x| vec![ulp_err(<f32 as Math>::exp(x), (x as f64).exp())]),
         ),
         (
             "exp_m1",
             -f32::MAX,
             f32::MAX,
-            Box::new(|x| vec![ulp_err(<f32 as Lane>::exp_m1(x), (x as f64).exp_m1())]),
+            Box::new(|x| vec![ulp_err(<f32 as Math>::exp_m1(x), (x as f64).exp_m1())]),
         ),
     ];
     let names: &[(&str, &[&str])] = &[
@@ -637,7 +637,7 @@ fn sin_cos_beyond_domain() {
             rng.uniform(SIN_COS_DOMAIN, 4.2e6)
         };
         let x = if i % 4 < 2 { x } else { -x };
-        let (s, c) = <f32 as Lane>::sin_cos(x);
+        let (s, c) = <f32 as Math>::sin_cos(x);
         assert!(
             s.is_finite() && c.is_finite() && s.abs() <= 1.0 && c.abs() <= 1.0,
             "x = {x:e}: ({s}, {c})"
@@ -694,7 +694,7 @@ const MIN_SUB: f32 = 1e-45;
 
 #[test]
 fn specials_trig() {
-    let sc = <f32 as Lane>::sin_cos;
+    let sc = <f32 as Math>::sin_cos;
     for (x, s, c) in [
         (0.0, 0.0, 1.0),
         (-0.0, -0.0, 1.0),
@@ -715,7 +715,7 @@ fn specials_trig() {
         assert!(s.abs() <= 1.0 && c.abs() <= 1.0, "{x:e}: {s} {c}");
     }
 
-    let s2 = <f32 as Lane>::sincos_2pi;
+    let s2 = <f32 as Math>::sincos_2pi;
     // Whole turns give exactly (0, 1); quarter turns exactly ±1 and 0 (+0).
     for u in [0.0f32, 1.0, -1.0, 2.0, 17.0, -1e6, 16_777_216.0, 3e38] {
         expect(&format!("sin2pi {u}"), s2(u).0, 0.0);
@@ -751,7 +751,7 @@ fn specials_trig() {
         expect("cos2pi", s2(u).1, NAN);
     }
 
-    let p4 = <f32 as Lane>::sincos_pi4;
+    let p4 = <f32 as Math>::sincos_pi4;
     expect("sinpi4 0", p4(0.0).0, 0.0);
     expect("sinpi4 -0", p4(-0.0).0, -0.0);
     expect("cospi4 0", p4(0.0).1, 1.0);
@@ -765,7 +765,7 @@ fn specials_trig() {
 #[test]
 fn specials_atan2() {
     use std::f32::consts::{FRAC_PI_2 as H, FRAC_PI_4 as Q, PI};
-    let a = <f32 as Lane>::atan2;
+    let a = <f32 as Math>::atan2;
     let q3 = (3.0 * std::f64::consts::FRAC_PI_4) as f32;
     let tiny = 1f64.atan2(f32::MAX as f64) as f32;
     let cases: &[(f32, f32, f32)] = &[
@@ -814,7 +814,7 @@ fn specials_atan2() {
 #[test]
 fn specials_asin_acos() {
     use std::f32::consts::{FRAC_PI_2 as H, PI};
-    let (asin, acos) = (<f32 as Lane>::asin, <f32 as Lane>::acos);
+    let (asin, acos) = (<f32 as Math>::asin, <f32 as Math>::acos);
     for (x, s, c) in [
         (0.0f32, 0.0f32, H),
         (-0.0, -0.0, H),
@@ -838,7 +838,7 @@ fn specials_asin_acos() {
 
 #[test]
 fn specials_log() {
-    let (ln, l1p) = (<f32 as Lane>::ln, <f32 as Lane>::ln_1p);
+    let (ln, l1p) = (<f32 as Math>::ln, <f32 as Math>::ln_1p);
     for (x, want) in [
         (1.0f32, 0.0f32),
         (0.0, -INF),
@@ -884,7 +884,7 @@ fn specials_log() {
 
 #[test]
 fn specials_exp() {
-    let (exp, em1) = (<f32 as Lane>::exp, <f32 as Lane>::exp_m1);
+    let (exp, em1) = (<f32 as Math>::exp, <f32 as Math>::exp_m1);
     for (x, want) in [
         (0.0f32, 1.0f32),
         (-0.0, 1.0),
@@ -996,79 +996,79 @@ fn lanes_equal_scalar() {
         "sin",
         -7000.0,
         7000.0,
-        |x| <f32 as Lane>::sin_cos(x).0,
-        |x| Lane::sin_cos(x).0,
+        |x| <f32 as Math>::sin_cos(x).0,
+        |x| Math::sin_cos(x).0,
     );
     lanes_unary(
         "cos",
         -7000.0,
         7000.0,
-        |x| <f32 as Lane>::sin_cos(x).1,
-        |x| Lane::sin_cos(x).1,
+        |x| <f32 as Math>::sin_cos(x).1,
+        |x| Math::sin_cos(x).1,
     );
     lanes_unary(
         "sin_2pi",
         -10.0,
         10.0,
-        |x| <f32 as Lane>::sincos_2pi(x).0,
-        |x| Lane::sincos_2pi(x).0,
+        |x| <f32 as Math>::sincos_2pi(x).0,
+        |x| Math::sincos_2pi(x).0,
     );
     lanes_unary(
         "cos_2pi",
         -10.0,
         10.0,
-        |x| <f32 as Lane>::sincos_2pi(x).1,
-        |x| Lane::sincos_2pi(x).1,
+        |x| <f32 as Math>::sincos_2pi(x).1,
+        |x| Math::sincos_2pi(x).1,
     );
     lanes_unary(
         "sin_pi4",
         -1.0,
         1.0,
-        |x| <f32 as Lane>::sincos_pi4(x).0,
-        |x| Lane::sincos_pi4(x).0,
+        |x| <f32 as Math>::sincos_pi4(x).0,
+        |x| Math::sincos_pi4(x).0,
     );
     lanes_unary(
         "cos_pi4",
         -1.0,
         1.0,
-        |x| <f32 as Lane>::sincos_pi4(x).1,
-        |x| Lane::sincos_pi4(x).1,
+        |x| <f32 as Math>::sincos_pi4(x).1,
+        |x| Math::sincos_pi4(x).1,
     );
     lanes_unary(
         "asin",
         -1.0,
         1.0,
-        <f32 as Lane>::asin,
-        <F32x8 as Lane>::asin,
+        <f32 as Math>::asin,
+        <F32x8 as Math>::asin,
     );
     lanes_unary(
         "acos",
         -1.0,
         1.0,
-        <f32 as Lane>::acos,
-        <F32x8 as Lane>::acos,
+        <f32 as Math>::acos,
+        <F32x8 as Math>::acos,
     );
-    lanes_unary("ln", 0.0, f32::MAX, <f32 as Lane>::ln, <F32x8 as Lane>::ln);
+    lanes_unary("ln", 0.0, f32::MAX, <f32 as Math>::ln, <F32x8 as Math>::ln);
     lanes_unary(
         "ln_1p",
         -1.0,
         1e6,
-        <f32 as Lane>::ln_1p,
-        <F32x8 as Lane>::ln_1p,
+        <f32 as Math>::ln_1p,
+        <F32x8 as Math>::ln_1p,
     );
     lanes_unary(
         "exp",
         -110.0,
         90.0,
-        <f32 as Lane>::exp,
-        <F32x8 as Lane>::exp,
+        <f32 as Math>::exp,
+        <F32x8 as Math>::exp,
     );
     lanes_unary(
         "exp_m1",
         -40.0,
         90.0,
-        <f32 as Lane>::exp_m1,
-        <F32x8 as Lane>::exp_m1,
+        <f32 as Math>::exp_m1,
+        <F32x8 as Math>::exp_m1,
     );
 
     let mut rng = Rng(0xa7a2);
@@ -1077,9 +1077,9 @@ fn lanes_equal_scalar() {
             std::array::from_fn(|i| interesting(&mut rng, k * 8 + i as u32, -1e3, 1e3));
         let xs: [f32; 8] =
             std::array::from_fn(|i| interesting(&mut rng, k * 8 + i as u32 + 3, -1e3, 1e3));
-        let v = Lane::atan2(F32x8::new(ys), F32x8::new(xs)).to_array();
+        let v = Math::atan2(F32x8::new(ys), F32x8::new(xs)).to_array();
         for i in 0..8 {
-            let s = <f32 as Lane>::atan2(ys[i], xs[i]);
+            let s = <f32 as Math>::atan2(ys[i], xs[i]);
             assert!(
                 same(s, v[i]),
                 "atan2({:e}, {:e}): scalar {s:e}, lane {i} {:e}",

@@ -1,8 +1,8 @@
 //! The crate's own transcendental functions: sin/cos (three forms), atan2, asin/acos, ln, ln_1p,
 //! exp and exp_m1, written once over [`Lane32`](crate::lane::Lane32).
 //!
-//! They are reached through [`Lane`] (`x.sin_cos()`, `y.atan2(x)`, …). The `f32` and
-//! [`F32x8`](crate::x8::F32x8) instances run these polynomials; the `f64` instance delegates to
+//! They are reached through the [`Math`] trait (`x.sin_cos()`, `y.atan2(x)`, …). The `f32` and
+//! [`F32x8`] instances run these polynomials; the `f64` instance delegates to
 //! libm and is the reference the errors below are measured against.
 //!
 //! # Bit-for-bit agreement of the widths
@@ -103,7 +103,130 @@ pub mod exp;
 pub mod log;
 pub mod trig;
 
-use crate::lane::Lane;
+use crate::lane::{F32x8, Lane};
+
+/// The transcendental functions of a lane: the crate's own polynomials for `f32` and [`F32x8`],
+/// libm for the `f64` reference. Warps are generic over `L: Math`.
+pub trait Math: Lane {
+    /// sin and cos, within the table's bound for |x| ≤ 6433.
+    fn sin_cos(self) -> (Self, Self);
+    /// sin and cos of 2π·self, with exact range reduction in `self`.
+    fn sincos_2pi(self) -> (Self, Self);
+    /// sin and cos of (π/4)·self for self in [−1, 1], with no range reduction.
+    fn sincos_pi4(self) -> (Self, Self);
+    /// Four-quadrant arctangent of `self / x`, in [−π, π].
+    fn atan2(self, x: Self) -> Self;
+    /// asin on [−1, 1]; NaN outside.
+    fn asin(self) -> Self;
+    /// acos on [−1, 1]; NaN outside.
+    fn acos(self) -> Self;
+    /// Natural logarithm.
+    fn ln(self) -> Self;
+    /// e^self.
+    fn exp(self) -> Self;
+    /// ln(1 + self), accurate near 0.
+    fn ln_1p(self) -> Self;
+    /// e^self − 1, accurate near 0.
+    fn exp_m1(self) -> Self;
+}
+
+/// Both f32 lanes run the same generic polynomials, which is what makes them agree bit for bit.
+macro_rules! own_math {
+    ($t:ty) => {
+        impl Math for $t {
+            #[inline(always)]
+            fn sin_cos(self) -> (Self, Self) {
+                trig::sin_cos(self)
+            }
+            #[inline(always)]
+            fn sincos_2pi(self) -> (Self, Self) {
+                trig::sincos_2pi(self)
+            }
+            #[inline(always)]
+            fn sincos_pi4(self) -> (Self, Self) {
+                trig::sincos_pi4(self)
+            }
+            #[inline(always)]
+            fn atan2(self, x: Self) -> Self {
+                atan::atan2(self, x)
+            }
+            #[inline(always)]
+            fn asin(self) -> Self {
+                asin::asin(self)
+            }
+            #[inline(always)]
+            fn acos(self) -> Self {
+                asin::acos(self)
+            }
+            #[inline(always)]
+            fn ln(self) -> Self {
+                log::ln(self)
+            }
+            #[inline(always)]
+            fn exp(self) -> Self {
+                exp::exp(self)
+            }
+            #[inline(always)]
+            fn ln_1p(self) -> Self {
+                log::ln_1p(self)
+            }
+            #[inline(always)]
+            fn exp_m1(self) -> Self {
+                exp::exp_m1(self)
+            }
+        }
+    };
+}
+
+own_math!(f32);
+own_math!(F32x8);
+
+/// The reference instance: libm in f64.
+impl Math for f64 {
+    #[inline]
+    fn sin_cos(self) -> (Self, Self) {
+        libm::sincos(self)
+    }
+    #[inline]
+    fn sincos_2pi(self) -> (Self, Self) {
+        // Reduce exactly in u before scaling, as the f32 instances do, so that u = 1 gives
+        // exactly (0, 1) in the reference too.
+        let r = self - libm::round(self);
+        libm::sincos(core::f64::consts::TAU * r)
+    }
+    #[inline]
+    fn sincos_pi4(self) -> (Self, Self) {
+        libm::sincos(core::f64::consts::FRAC_PI_4 * self)
+    }
+    #[inline]
+    fn atan2(self, x: Self) -> Self {
+        libm::atan2(self, x)
+    }
+    #[inline]
+    fn asin(self) -> Self {
+        libm::asin(self)
+    }
+    #[inline]
+    fn acos(self) -> Self {
+        libm::acos(self)
+    }
+    #[inline]
+    fn ln(self) -> Self {
+        libm::log(self)
+    }
+    #[inline]
+    fn exp(self) -> Self {
+        libm::exp(self)
+    }
+    #[inline]
+    fn ln_1p(self) -> Self {
+        libm::log1p(self)
+    }
+    #[inline]
+    fn exp_m1(self) -> Self {
+        libm::expm1(self)
+    }
+}
 
 /// `1.5 · 2²³`: adding and subtracting it rounds an f32 with |x| ≤ 2²² to the nearest integer
 /// (ties to even), and the bits of `x + MAGIC` are `0x4b40_0000 + round(x)`.

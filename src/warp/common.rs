@@ -1,6 +1,7 @@
 //! Small pieces that several warps share: the input contract and the angle of a direction.
 
-use crate::lane::{Lane, V2};
+use crate::lane::V2;
+use crate::math::Math;
 
 /// 1 − 2⁻²⁴, the largest f32 below 1.
 pub const ONE_MINUS_EPS: f32 = 0.999_999_94;
@@ -8,12 +9,12 @@ pub const ONE_MINUS_EPS: f32 = 0.999_999_94;
 /// The input contract of every warp: u is clamped to [0, 1], so u = 1, negative values and ±inf
 /// land on the domain's boundary. NaN passes through and makes every output NaN.
 #[inline(always)]
-pub(crate) fn clamp_u<L: Lane>(u: V2<L>) -> V2<L> {
+pub(crate) fn clamp_u<L: Math>(u: V2<L>) -> V2<L> {
     V2::new(clamp01(u.x), clamp01(u.y))
 }
 
 #[inline(always)]
-pub(crate) fn clamp01<L: Lane>(x: L) -> L {
+pub(crate) fn clamp01<L: Math>(x: L) -> L {
     x.clamp(L::c(0.0), L::c(1.0))
 }
 
@@ -22,7 +23,7 @@ pub(crate) fn clamp01<L: Lane>(x: L) -> L {
 /// atan2/2π lies in [−½, ½]; negative values wrap by adding 1, and a tiny negative angle, whose
 /// wrapped value would round to 1, is kept just below 1 so the result honours the u < 1 contract.
 #[inline(always)]
-pub(crate) fn azimuth_fraction<L: Lane>(x: L, y: L) -> L {
+pub(crate) fn azimuth_fraction<L: Math>(x: L, y: L) -> L {
     let v = y.atan2(x) * L::c(1.0 / core::f64::consts::TAU);
     let v = L::select(v.lt(L::c(0.0)), v + L::c(1.0), v);
     // NaN goes in the second operand of min, which returns it.
@@ -31,6 +32,6 @@ pub(crate) fn azimuth_fraction<L: Lane>(x: L, y: L) -> L {
 
 /// sin θ from t = 1 − cos θ, as √(t(2 − t)): no cancellation near the pole, unlike √(1 − cos²θ).
 #[inline(always)]
-pub(crate) fn sin_from_one_minus_cos<L: Lane>(t: L) -> L {
+pub(crate) fn sin_from_one_minus_cos<L: Math>(t: L) -> L {
     (t * (L::c(2.0) - t)).max(L::c(0.0)).sqrt()
 }

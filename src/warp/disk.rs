@@ -1,7 +1,8 @@
 //! Square → unit disk: Shirley–Chiu's concentric map and the polar map. Both are area-preserving
 //! up to a constant, so the area pdf is 1/π.
 
-use crate::lane::{Lane, V2};
+use crate::lane::V2;
+use crate::math::Math;
 use crate::warp::common::{azimuth_fraction, clamp_u};
 
 /// The concentric map, also returning 1 − r for the radius r of the point.
@@ -14,7 +15,7 @@ use crate::warp::common::{azimuth_fraction, clamp_u};
 /// cancel near the rim, where √(1 − x² − y²) loses up to 8e-5. It is computed from u, as
 /// 1 − |2u − 1| = 2·min(u, 1 − u), since 2u − 1 itself is rounded in f32 for u < ½.
 #[inline(always)]
-pub(crate) fn concentric_with_one_minus_r<L: Lane>(u: V2<L>) -> (V2<L>, L) {
+pub(crate) fn concentric_with_one_minus_r<L: Math>(u: V2<L>) -> (V2<L>, L) {
     let u = clamp_u(u);
     let a = u.x.mul_add(L::c(2.0), L::c(-1.0));
     let b = u.y.mul_add(L::c(2.0), L::c(-1.0));
@@ -32,14 +33,14 @@ pub(crate) fn concentric_with_one_minus_r<L: Lane>(u: V2<L>) -> (V2<L>, L) {
 }
 
 #[inline(always)]
-pub fn concentric_disk<L: Lane>(u: V2<L>) -> V2<L> {
+pub fn concentric_disk<L: Math>(u: V2<L>) -> V2<L> {
     concentric_with_one_minus_r(u).0.nan_where(u.any_nan())
 }
 
 /// Inverse of the concentric map. The larger |coordinate| selects the wedge; atan of the ratio of
 /// the smaller to it gives t. p = 0 maps to (½, ½).
 #[inline(always)]
-pub fn concentric_disk_inverse<L: Lane>(p: V2<L>) -> V2<L> {
+pub fn concentric_disk_inverse<L: Math>(p: V2<L>) -> V2<L> {
     let x_major = p.x.abs().ge(p.y.abs());
     let major = L::select(x_major, p.x, p.y);
     let minor = L::select(x_major, p.y, p.x);
@@ -59,7 +60,7 @@ pub fn concentric_disk_inverse<L: Lane>(p: V2<L>) -> V2<L> {
 
 /// The polar map: r = √u₀, φ = 2πu₁.
 #[inline(always)]
-pub fn polar_disk<L: Lane>(u: V2<L>) -> V2<L> {
+pub fn polar_disk<L: Math>(u: V2<L>) -> V2<L> {
     let u = clamp_u(u);
     let r = u.x.sqrt();
     let (s, c) = u.y.sincos_2pi();
@@ -68,12 +69,12 @@ pub fn polar_disk<L: Lane>(u: V2<L>) -> V2<L> {
 
 /// Inverse of the polar map: u₀ = |p|², u₁ = azimuth/2π in [0, 1).
 #[inline(always)]
-pub fn polar_disk_inverse<L: Lane>(p: V2<L>) -> V2<L> {
+pub fn polar_disk_inverse<L: Math>(p: V2<L>) -> V2<L> {
     V2::new(p.length_squared(), azimuth_fraction(p.x, p.y)).nan_where(p.any_nan())
 }
 
 /// Area pdf of a uniform point in the unit disk: 1/π.
 #[inline(always)]
-pub fn uniform_disk_pdf<L: Lane>() -> L {
+pub fn uniform_disk_pdf<L: Math>() -> L {
     L::c(core::f64::consts::FRAC_1_PI)
 }

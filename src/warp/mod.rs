@@ -1,7 +1,7 @@
 //! Warps: maps from the unit square to the domains of direct illumination, each with its pdf and
 //! its inverse, side by side. This module holds the scalar (glam) faces; [`x8`] the packet faces.
 //!
-//! Every warp is one generic function over [`Lane`](crate::lane::Lane) in a file of its family
+//! Every warp is one generic function over [`Math`](crate::math::Math) in a file of its family
 //! (`disk`, `hemisphere`, `sphere`, `cone`, `phong`, `triangle`, `spherical_triangle`,
 //! `spherical_rectangle`, `tent`); both faces are thin instantiations of it, so lane *i* of a
 //! packet result equals the scalar result on lane *i*'s input, bit for bit.
@@ -44,7 +44,7 @@ pub use phong::PHONG_N_MAX;
 pub use spherical_rectangle::{SPHERICAL_RECTANGLE_MAX_SR, SPHERICAL_RECTANGLE_MIN_SR};
 pub use spherical_triangle::{SPHERICAL_TRIANGLE_MAX_SR, SPHERICAL_TRIANGLE_MIN_SR};
 
-/// The generic forms, for code that is itself generic over [`Lane`](crate::lane::Lane) (the f64
+/// The generic forms, for code that is itself generic over [`Math`](crate::math::Math) (the f64
 /// instance is the reference the report measures against).
 pub mod generic {
     pub use super::cone::{
@@ -247,8 +247,9 @@ pub fn uniform_triangle_pdf(b: Vec2) -> f32 {
 ///
 /// Arvo's map, uniform in solid angle, with pdf 1/Ω (Ω by Van Oosterom–Strackee on edges); below
 /// [`SPHERICAL_TRIANGLE_MIN_SR`] or above [`SPHERICAL_TRIANGLE_MAX_SR`] it samples by area instead
-/// and returns the exact converted pdf. Degenerate triangles (coincident vertices, the shading
-/// point in the plane, non-finite input) give pdf 0 and direction +z. NaN u gives a pdf of 0.
+/// and returns the exact converted pdf. Degenerate triangles (coincident or collinear vertices,
+/// the shading point within 1e-6 rad of the triangle's plane, non-finite input) give pdf 0 and
+/// direction +z. NaN u gives a pdf of 0.
 #[inline]
 pub fn spherical_triangle(u: Vec2, a: Vec3, b: Vec3, c: Vec3) -> (Vec3, f32) {
     let (w, pdf) =
@@ -276,7 +277,8 @@ pub fn spherical_triangle_inverse(w: Vec3, a: Vec3, b: Vec3, c: Vec3) -> Vec2 {
 /// Ureña et al.'s map, uniform in solid angle (pdf 1/Ω, Ω by Van Oosterom–Strackee); below
 /// [`SPHERICAL_RECTANGLE_MIN_SR`] or above [`SPHERICAL_RECTANGLE_MAX_SR`] it samples by area
 /// and returns the exact converted pdf. Seen edge-on, or degenerate, the pdf is 0 and the point
-/// is `corner`. NaN u gives a pdf of 0.
+/// is `corner` (edge-on means the shading point within 1e-6 rad of the plane). NaN u gives a
+/// pdf of 0.
 #[inline]
 pub fn spherical_rectangle(u: Vec2, corner: Vec3, ex: Vec3, ey: Vec3) -> (Vec3, f32) {
     let (w, pdf) = spherical_rectangle::spherical_rectangle::<f32>(

@@ -1,6 +1,7 @@
 //! Square → Phong lobe cosⁿα about +z, pdf (n+1)/(2π)·cosⁿα per steradian.
 
-use crate::lane::{Lane, V2, V3};
+use crate::lane::{V2, V3};
+use crate::math::Math;
 use crate::warp::common::{azimuth_fraction, clamp_u, sin_from_one_minus_cos};
 use crate::warp::cone::one_minus_z;
 
@@ -9,7 +10,7 @@ use crate::warp::cone::one_minus_z;
 pub const PHONG_N_MAX: f32 = 1.0e20;
 
 #[inline(always)]
-fn clamp_n<L: Lane>(n: L) -> L {
+fn clamp_n<L: Math>(n: L) -> L {
     n.clamp(L::c(0.0), L::c(PHONG_N_MAX as f64))
 }
 
@@ -18,7 +19,7 @@ fn clamp_n<L: Lane>(n: L) -> L {
 /// The naive cos α = u₀^{1/(n+1)} rounds to 1 for most u₀ when n is large (157 distinct directions
 /// from 1e5 samples at n = 1e6); expm1 keeps t, and with it sin α, to full relative precision.
 #[inline(always)]
-pub fn phong_lobe<L: Lane>(u: V2<L>, n: L) -> V3<L> {
+pub fn phong_lobe<L: Math>(u: V2<L>, n: L) -> V3<L> {
     let u = clamp_u(u);
     let n = clamp_n(n);
     let t = -(u.x.ln() / (n + L::c(1.0))).exp_m1();
@@ -31,7 +32,7 @@ pub fn phong_lobe<L: Lane>(u: V2<L>, n: L) -> V3<L> {
 /// makes n = 0 agree with the open hemisphere). NaN gives 0. cos α above 1, which rounding can
 /// produce from a slightly long vector, counts as 1.
 #[inline(always)]
-pub fn phong_lobe_pdf<L: Lane>(cos_alpha: L, n: L) -> L {
+pub fn phong_lobe_pdf<L: Math>(cos_alpha: L, n: L) -> L {
     let n = clamp_n(n);
     let norm = (n + L::c(1.0)) * L::c(0.5 * core::f64::consts::FRAC_1_PI);
     let p = norm * (n * cos_alpha.min(L::c(1.0)).ln()).exp();
@@ -41,7 +42,7 @@ pub fn phong_lobe_pdf<L: Lane>(cos_alpha: L, n: L) -> L {
 /// Inverse: u₀ = cos^{n+1}α = exp((n+1)·ln(1 − t)) with t = 1 − cos α taken from x² + y², so
 /// directions near the axis keep their precision.
 #[inline(always)]
-pub fn phong_lobe_inverse<L: Lane>(w: V3<L>, n: L) -> V2<L> {
+pub fn phong_lobe_inverse<L: Math>(w: V3<L>, n: L) -> V2<L> {
     let n = clamp_n(n);
     let t = one_minus_z(w);
     let u0 = ((n + L::c(1.0)) * (-t).ln_1p()).exp();

@@ -5,9 +5,10 @@
 //! and `ey` must be orthogonal. The algorithm works in the rectangle's frame (x̂ along ex, ŷ along
 //! ey, ẑ towards the shading point's side flipped so that z₀ ≤ 0).
 
-use crate::lane::{Lane, V2, V3};
+use crate::lane::{V2, V3};
+use crate::math::Math;
 use crate::warp::common::clamp_u;
-use crate::warp::polygon::{area_pdf_solid_angle, vos_solid_angle};
+use crate::warp::polygon::{area_pdf_solid_angle, inside_polygon, vos_solid_angle};
 
 /// Below this solid angle (sr) the rectangle is sampled by area.
 ///
@@ -23,7 +24,7 @@ pub const SPHERICAL_RECTANGLE_MAX_SR: f32 = 6.0;
 
 const TAU: f64 = core::f64::consts::TAU;
 
-struct Setup<L: Lane> {
+struct Setup<L: Math> {
     corner: V3<L>,
     ex: V3<L>,
     ey: V3<L>,
@@ -50,7 +51,7 @@ struct Setup<L: Lane> {
 /// Solid angle of the local rectangle [x0, x1] × [y0, y1] at height z0, as two VOS triangles.
 /// Their triple products are exactly z0·(x1−x0)·(y1−y0), so no cancellation enters.
 #[inline(always)]
-fn rect_solid_angle<L: Lane>(x0: L, x1: L, y0: L, y1: L, z0: L) -> L {
+fn rect_solid_angle<L: Math>(x0: L, x1: L, y0: L, y1: L, z0: L) -> L {
     let v00 = V3::new(x0, y0, z0);
     let v10 = V3::new(x1, y0, z0);
     let v11 = V3::new(x1, y1, z0);
@@ -62,7 +63,7 @@ fn rect_solid_angle<L: Lane>(x0: L, x1: L, y0: L, y1: L, z0: L) -> L {
 }
 
 #[inline(always)]
-fn setup<L: Lane>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
+fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
     let exl = ex.length();
     let eyl = ey.length();
     let xh = ex.scale(L::c(1.0) / exl);
@@ -122,14 +123,14 @@ fn setup<L: Lane>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
 
 /// h = y/√(d² + y²): the sine of the elevation of (·, y) seen at distance d from the y-axis line.
 #[inline(always)]
-fn elevation<L: Lane>(y: L, d: L) -> L {
+fn elevation<L: Math>(y: L, d: L) -> L {
     y / d.mul_add(d, y * y).sqrt()
 }
 
 /// Ureña's map: u₀ picks x by inverting the solid angle of the slab [x0, x], u₁ the height y
 /// uniformly in the slab's solid angle. Returns local (x, y).
 #[inline(always)]
-fn urena<L: Lane>(s: &Setup<L>, u: V2<L>) -> (L, L) {
+fn urena<L: Math>(s: &Setup<L>, u: V2<L>) -> (L, L) {
     let au = u.x.mul_add(s.s_map, s.k);
     let (sa, ca) = au.sin_cos();
     let fu = ca.mul_add(s.b0, -s.b1) / sa;
@@ -152,7 +153,7 @@ fn urena<L: Lane>(s: &Setup<L>, u: V2<L>) -> (L, L) {
 }
 
 #[inline(always)]
-fn pdf_of<L: Lane>(s: &Setup<L>, w: V3<L>) -> L {
+fn pdf_of<L: Math>(s: &Setup<L>, w: V3<L>) -> L {
     let n = s.ex.cross(s.ey);
     L::select(
         s.by_area,
@@ -164,7 +165,7 @@ fn pdf_of<L: Lane>(s: &Setup<L>, w: V3<L>) -> L {
 /// Ureña's map alone, with no area fallback and no validity checks, as a point: for measuring
 /// where spherical sampling breaks down. Use [`spherical_rectangle`] to sample.
 #[inline(always)]
-pub fn urena_rectangle<L: Lane>(u: V2<L>, corner: V3<L>, ex: V3<L>, ey: V3<L>) -> V3<L> {
+pub fn urena_rectangle<L: Math>(u: V2<L>, corner: V3<L>, ex: V3<L>, ey: V3<L>) -> V3<L> {
     let s = setup(corner, ex, ey);
     let (xu, yv) = urena(&s, clamp_u(u));
     corner + s.xh.scale(xu - s.x0) + s.yh.scale(yv - s.y0)
@@ -172,7 +173,7 @@ pub fn urena_rectangle<L: Lane>(u: V2<L>, corner: V3<L>, ex: V3<L>, ey: V3<L>) -
 
 /// A point on the rectangle and its pdf per steradian. See the public face for the contract.
 #[inline(always)]
-pub fn spherical_rectangle<L: Lane>(u: V2<L>, corner: V3<L>, ex: V3<L>, ey: V3<L>) -> (V3<L>, L) {
+pub fn spherical_rectangle<L: Math>(u: V2<L>, corner: V3<L>, ex: V3<L>, ey: V3<L>) -> (V3<L>, L) {
     let u = clamp_u(u);
     let s = setup(corner, ex, ey);
     let (xu, yv) = urena(&s, u);
@@ -186,24 +187,13 @@ pub fn spherical_rectangle<L: Lane>(u: V2<L>, corner: V3<L>, ex: V3<L>, ey: V3<L
     (p, L::select(ok, pdf, L::c(0.0)))
 }
 
-/// The rectangle's local (s, t) ∈ [0,1]² hit by unit direction `w`, and whether it is hit in front.
-#[inline(always)]
-fn hit<L: Lane>(s: &Setup<L>, w: V3<L>) -> (V2<L>, L::Mask) {
-    let n = s.ex.cross(s.ey);
-    let t = s.corner.dot(n) / w.dot(n);
-    let d = w.scale(t) - s.corner;
-    let st = V2::new(d.dot(s.ex) / s.ex.dot(s.ex), d.dot(s.ey) / s.ey.dot(s.ey));
-    (st, t.gt(L::c(0.0)))
-}
-
 /// pdf per steradian that [`spherical_rectangle`] returns a point in direction `w` (unit); 0 when
 /// `w` misses the rectangle.
 #[inline(always)]
-pub fn spherical_rectangle_pdf<L: Lane>(w: V3<L>, corner: V3<L>, ex: V3<L>, ey: V3<L>) -> L {
+pub fn spherical_rectangle_pdf<L: Math>(w: V3<L>, corner: V3<L>, ex: V3<L>, ey: V3<L>) -> L {
     let s = setup(corner, ex, ey);
-    let (st, front) = hit(&s, w);
-    let inside =
-        front & st.x.ge(L::c(0.0)) & st.x.le(L::c(1.0)) & st.y.ge(L::c(0.0)) & st.y.le(L::c(1.0));
+    let quad = [corner, corner + ex, corner + ex + ey, corner + ey];
+    let inside = inside_polygon(w, quad, [ex, ey, -ex, -ey], corner.dot(ex.cross(ey)));
     L::select(s.valid & inside, pdf_of(&s, w), L::c(0.0))
 }
 
@@ -212,7 +202,7 @@ pub fn spherical_rectangle_pdf<L: Lane>(w: V3<L>, corner: V3<L>, ex: V3<L>, ey: 
 /// Spherically: u₀ is the solid angle of the slab [x0, x] over the whole, u₁ the fraction of the
 /// elevation sine h between the slab's bottom and top edges. By area: p's (s, t).
 #[inline(always)]
-pub fn spherical_rectangle_inverse<L: Lane>(
+pub fn spherical_rectangle_inverse<L: Math>(
     p: V3<L>,
     corner: V3<L>,
     ex: V3<L>,

@@ -4,9 +4,10 @@
 //! Vertices are given relative to the shading point, in any winding. The solid angle Ω comes from
 //! Van Oosterom–Strackee on edge vectors, and the same Ω serves the sample and the pdf.
 
-use crate::lane::{Lane, V2, V3};
+use crate::lane::{V2, V3};
+use crate::math::Math;
 use crate::warp::common::clamp_u;
-use crate::warp::polygon::{area_pdf_solid_angle, vos_solid_angle};
+use crate::warp::polygon::{area_pdf_solid_angle, inside_polygon, vos_solid_angle};
 use crate::warp::triangle::{uniform_triangle, uniform_triangle_inverse};
 
 /// Below this solid angle (sr) the triangle is sampled by area.
@@ -22,7 +23,7 @@ pub const SPHERICAL_TRIANGLE_MIN_SR: f32 = 1.0e-6;
 pub const SPHERICAL_TRIANGLE_MAX_SR: f32 = 6.0;
 
 /// Everything the sampler, pdf and inverse need, computed once per triangle.
-struct Setup<L: Lane> {
+struct Setup<L: Math> {
     a: V3<L>,
     /// Unit vertex directions.
     ua: V3<L>,
@@ -44,7 +45,7 @@ struct Setup<L: Lane> {
 }
 
 #[inline(always)]
-fn setup<L: Lane>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
+fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     let (la, lb, lc) = (a.length(), b.length(), c.length());
     let (ua, ub, uc) = (
         a.scale(L::c(1.0) / la),
@@ -110,7 +111,7 @@ fn setup<L: Lane>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
 
 /// The component of `v` orthogonal to unit `u`, normalised.
 #[inline(always)]
-fn ortho<L: Lane>(v: V3<L>, u: V3<L>) -> V3<L> {
+fn ortho<L: Math>(v: V3<L>, u: V3<L>) -> V3<L> {
     let w = v - u.scale(v.dot(u));
     w.scale(L::c(1.0) / w.length())
 }
@@ -128,7 +129,7 @@ fn ortho<L: Lane>(v: V3<L>, u: V3<L>) -> V3<L> {
 ///
 /// Every term is a product of sines, so nothing cancels for small triangles or small u₀.
 #[inline(always)]
-fn arvo<L: Lane>(s: &Setup<L>, u: V2<L>) -> V3<L> {
+fn arvo<L: Math>(s: &Setup<L>, u: V2<L>) -> V3<L> {
     let half = u.x * s.omega * L::c(0.5);
     let (h1, c1) = half.sin_cos();
     let (h2, c2) = (half - s.alpha).sin_cos();
@@ -156,7 +157,7 @@ fn arvo<L: Lane>(s: &Setup<L>, u: V2<L>) -> V3<L> {
 /// The point of the plane hit by unit direction `w`, as barycentrics (b₀, b₁, b₂), and whether
 /// the hit lies in front of the origin.
 #[inline(always)]
-fn barycentrics<L: Lane>(w: V3<L>, a: V3<L>, b: V3<L>, c: V3<L>, n: V3<L>) -> (V3<L>, L::Mask) {
+fn barycentrics<L: Math>(w: V3<L>, a: V3<L>, b: V3<L>, c: V3<L>, n: V3<L>) -> (V3<L>, L::Mask) {
     let wn = w.dot(n);
     let t = a.dot(n) / wn;
     let d = w.scale(t) - a;
@@ -169,13 +170,13 @@ fn barycentrics<L: Lane>(w: V3<L>, a: V3<L>, b: V3<L>, c: V3<L>, n: V3<L>) -> (V
 /// Arvo's map alone, with no area fallback and no validity checks: for measuring where spherical
 /// sampling breaks down (the report's stability table). Use [`spherical_triangle`] to sample.
 #[inline(always)]
-pub fn arvo_triangle<L: Lane>(u: V2<L>, a: V3<L>, b: V3<L>, c: V3<L>) -> V3<L> {
+pub fn arvo_triangle<L: Math>(u: V2<L>, a: V3<L>, b: V3<L>, c: V3<L>) -> V3<L> {
     arvo(&setup(a, b, c), clamp_u(u))
 }
 
 /// Direction towards (a, b, c) and its pdf per steradian. See the public face for the contract.
 #[inline(always)]
-pub fn spherical_triangle<L: Lane>(u: V2<L>, a: V3<L>, b: V3<L>, c: V3<L>) -> (V3<L>, L) {
+pub fn spherical_triangle<L: Math>(u: V2<L>, a: V3<L>, b: V3<L>, c: V3<L>) -> (V3<L>, L) {
     let u = clamp_u(u);
     let s = setup(a, b, c);
     let w_sph = arvo(&s, u);
@@ -192,7 +193,7 @@ pub fn spherical_triangle<L: Lane>(u: V2<L>, a: V3<L>, b: V3<L>, c: V3<L>) -> (V
 /// The pdf of direction `w` given a set-up triangle, without the inside test: 1/Ω when sampled
 /// spherically, the converted area pdf otherwise.
 #[inline(always)]
-fn pdf_of<L: Lane>(s: &Setup<L>, w: V3<L>) -> L {
+fn pdf_of<L: Math>(s: &Setup<L>, w: V3<L>) -> L {
     let sph = L::c(1.0) / s.omega;
     let area = area_pdf_solid_angle(w, s.a, s.n, L::c(2.0));
     L::select(s.by_area, area, sph)
@@ -200,10 +201,9 @@ fn pdf_of<L: Lane>(s: &Setup<L>, w: V3<L>) -> L {
 
 /// pdf per steradian that [`spherical_triangle`] returns `w` (unit): 0 outside the triangle.
 #[inline(always)]
-pub fn spherical_triangle_pdf<L: Lane>(w: V3<L>, a: V3<L>, b: V3<L>, c: V3<L>) -> L {
+pub fn spherical_triangle_pdf<L: Math>(w: V3<L>, a: V3<L>, b: V3<L>, c: V3<L>) -> L {
     let s = setup(a, b, c);
-    let (bary, front) = barycentrics(w, a, b, c, s.n);
-    let inside = front & bary.x.ge(L::c(0.0)) & bary.y.ge(L::c(0.0)) & bary.z.ge(L::c(0.0));
+    let inside = inside_polygon(w, [a, b, c], [b - a, c - b, a - c], a.dot(s.n));
     L::select(s.valid & inside, pdf_of(&s, w), L::c(0.0))
 }
 
@@ -213,7 +213,7 @@ pub fn spherical_triangle_pdf<L: Lane>(w: V3<L>, a: V3<L>, b: V3<L>, c: V3<L>) -
 /// of the arc B Ĉ covered, |w − B|²/|Ĉ − B|², and u₀ the area of A B Ĉ over Ω. By area: the
 /// low-distortion triangle inverse of w's barycentrics.
 #[inline(always)]
-pub fn spherical_triangle_inverse<L: Lane>(w: V3<L>, a: V3<L>, b: V3<L>, c: V3<L>) -> V2<L> {
+pub fn spherical_triangle_inverse<L: Math>(w: V3<L>, a: V3<L>, b: V3<L>, c: V3<L>) -> V2<L> {
     let s = setup(a, b, c);
     let (bary, _) = barycentrics(w, a, b, c, s.n);
     let u_area = uniform_triangle_inverse(bary);

@@ -112,6 +112,10 @@ impl PlanarLight {
         config.run(
             move |i| light.to_square(sample(i).as_dvec3()),
             move |st: DVec2| {
+                // Nodes on the square's boundary lie exactly on the light's edges, where an
+                // inside test may go either way; the pdf is continuous from inside, so evaluate
+                // a hair inside.
+                let st = st.clamp(DVec2::splat(1e-7), DVec2::splat(1.0 - 1e-7));
                 let x = light.from_square(st);
                 let d = x.length();
                 let cos_l = (x.dot(n) / (d * n.length())).abs();

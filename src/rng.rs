@@ -1,0 +1,203 @@
+//! Random numbers in packets: [`Pcg32x8`], eight PCG32 streams advanced together.
+//!
+//! # Algorithm
+//!
+//! Each lane is the standard `pcg32` generator (PCG XSH RR 64/32, O'Neill 2014): a 64-bit linear
+//! congruential state
+//!
+//! ```text
+//! state' = state · 6364136223846793005 + increment   (mod 2⁶⁴), increment odd
+//! ```
+//!
+//! and a 32-bit output taken from the state *before* the step by the "xorshift high, random
+//! rotate" permutation:
+//!
+//! ```text
+//! xsh = ((state ^ (state >> 18)) >> 27) as u32,  rot = (state >> 59) as u32,
+//! out = xsh.rotate_right(rot)
+//! ```
+//!
+//! The packet keeps each 64-bit state as two [`U32x8`] halves (high and low words), so the step
+//! needs only 32-bit lane operations: one widening 32×32→64 multiply of the low words by the low
+//! word of the multiplier, two wrapping 32-bit multiplies for the cross terms, and an add with a
+//! carry from the low to the high word. This is exact modulo 2⁶⁴ on every target.
+//!
+//! Speed depends on the target: with AVX2 these are all vector instructions and a packet is about
+//! as fast per value as eight scalar generators, while on baseline x86-64 (SSE2 only) `wide`
+//! implements 32-bit lane multiplies and per-lane shifts one lane at a time, and the packet is
+//! slower per value than scalar code (see `benches/sequences.rs`). Its use there is convenience:
+//! the samples arrive already in [`F32x8`] form for the packet warps.
+//!
+//! # Equivalence with `rand_pcg`
+//!
+//! Lane *i* of `Pcg32x8::new(states, streams)` produces exactly the sequence of
+//! `rand_pcg::Pcg32::new(states[i], streams[i])`'s `next_u32`, in every build (the arithmetic is
+//! integer and exact). [`Pcg32x8::lane`] returns lane *i* as a `rand_pcg::Pcg32` positioned at the
+//! same point of its sequence, which implements `rand_core`'s `Rng` for code that wants a scalar
+//! generator, and [`Pcg32x8::from_lanes`] goes the other way.
+//!
+//! # Floats
+//!
+//! [`Pcg32x8::next_f32x8`] maps a 32-bit output `x` to `(x >> 8) · 2⁻²⁴`: the 2²⁴ values
+//! `0, 2⁻²⁴, …, 1 − 2⁻²⁴`, each with probability 2⁻²⁴, exactly representable in f32, so the
+//! result is in [0, 1) and is never 1.0.
+
+use rand_pcg::Pcg32;
+use wide::{bytemuck, i32x8};
+
+use crate::lane::{F32x8, U32x8};
+
+/// The PCG multiplier for 64-bit state (the same constant as `rand_pcg`).
+const MULTIPLIER: u64 = 6_364_136_223_846_793_005;
+const MUL_LO: u32 = MULTIPLIER as u32;
+const MUL_HI: u32 = (MULTIPLIER >> 32) as u32;
+
+/// Eight independent PCG32 (XSH RR 64/32) generators, one per lane, stepped together.
+///
+/// Lane *i* is bit-for-bit `rand_pcg::Pcg32::new(states[i], streams[i])`; see the
+/// [module documentation](self) for the algorithm and the float contract.
+///
+/// ```
+/// use mcsample::rng::Pcg32x8;
+/// use rand_core::Rng;
+///
+/// let mut packet = Pcg32x8::new([1, 2, 3, 4, 5, 6, 7, 8], [54; 8]);
+/// let mut scalar = rand_pcg::Pcg32::new(3, 54);
+/// let first = packet.next_u32x8().to_array();
+/// assert_eq!(first[2], scalar.next_u32());
+/// let u = packet.next_f32x8().to_array();
+/// assert_eq!(u[2], (scalar.next_u32() >> 8) as f32 / (1u32 << 24) as f32);
+/// assert!(u.iter().all(|&x| (0.0..1.0).contains(&x)));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Pcg32x8 {
+    /// Low 32 bits of each lane's state.
+    lo: U32x8,
+    /// High 32 bits of each lane's state.
+    hi: U32x8,
+    /// Low 32 bits of each lane's (odd) increment.
+    inc_lo: U32x8,
+    /// High 32 bits of each lane's increment.
+    inc_hi: U32x8,
+}
+
+impl Pcg32x8 {
+    /// Eight generators: lane *i* equals `rand_pcg::Pcg32::new(states[i], streams[i])`.
+    ///
+    /// As there, the increment is `(stream << 1) | 1` (the top bit of a stream is discarded), and
+    /// the state is moved away from the seed by `state = (state + increment)`, then one step.
+    /// Any values are allowed, including equal streams in different lanes.
+    pub fn new(states: [u64; 8], streams: [u64; 8]) -> Self {
+        let incs = streams.map(|s| (s << 1) | 1);
+        let states = core::array::from_fn(|i| {
+            states[i]
+                .wrapping_add(incs[i])
+                .wrapping_mul(MULTIPLIER)
+                .wrapping_add(incs[i])
+        });
+        Self::from_raw(states, incs)
+    }
+
+    /// The packet whose lane *i* continues `lanes[i]` from its current position (the inverse of
+    /// [`lane`](Self::lane)).
+    pub fn from_lanes(lanes: [Pcg32; 8]) -> Self {
+        Self::from_raw(
+            lanes.clone().map(|g| g.state()),
+            lanes.map(|g| (g.stream() << 1) | 1),
+        )
+    }
+
+    /// Lane `i` as a scalar `rand_pcg::Pcg32` at the same position: its `next_u32` (from
+    /// `rand_core::Rng`) returns what lane `i` of the next [`next_u32x8`](Self::next_u32x8)
+    /// would. A copy: stepping it does not step the packet. Panics if `i >= 8`.
+    pub fn lane(&self, i: usize) -> Pcg32 {
+        let (states, incs) = self.raw();
+        Pcg32::from_state(states[i], incs[i] >> 1)
+    }
+
+    /// The next 32-bit output of every lane, then one step of every lane.
+    #[inline]
+    pub fn next_u32x8(&mut self) -> U32x8 {
+        let (lo, hi) = (self.lo, self.hi);
+
+        // Output XSH RR of the old state: x = s ^ (s >> 18); xsh = (x >> 27) as u32; rot = s >> 59.
+        let x_lo = lo ^ ((lo >> 18) | (hi << 14));
+        let x_hi = hi ^ (hi >> 18);
+        let xsh = (x_lo >> 27) | (x_hi << 5);
+        let rot = hi >> 27;
+        let left = (U32x8::ZERO - rot) & U32x8::splat(31);
+        let out = (xsh >> rot) | (xsh << left);
+
+        // Step: s·M + inc mod 2⁶⁴, with 32-bit halves.
+        let (p_lo, p_hi) = lo.mul_keep_low_high(U32x8::splat(MUL_LO));
+        let cross = lo * U32x8::splat(MUL_HI) + hi * U32x8::splat(MUL_LO);
+        let new_lo = p_lo + self.inc_lo;
+        // Carry out of the low word: the sum wrapped iff it is below an addend.
+        let carry = new_lo.simd_lt(self.inc_lo); // all ones (= −1) where a carry occurred
+        self.hi = p_hi + cross + self.inc_hi - carry;
+        self.lo = new_lo;
+        out
+    }
+
+    /// The next output of every lane as a float in [0, 1): `(x >> 8) · 2⁻²⁴` for the 32-bit
+    /// output `x` that [`next_u32x8`](Self::next_u32x8) would return. Exact, and never 1.0.
+    #[inline]
+    pub fn next_f32x8(&mut self) -> F32x8 {
+        let x = self.next_u32x8() >> 8;
+        // x < 2²⁴, so the signed conversion is exact and the scaling by a power of two is too.
+        F32x8::from_i32x8(bytemuck::cast::<U32x8, i32x8>(x)) * F32x8::splat(1.0 / 16_777_216.0)
+    }
+
+    /// Jumps every lane ahead by `delta` steps, as if [`next_u32x8`](Self::next_u32x8) had been
+    /// called `delta` times, in O(log delta) scalar work (Brown, "Random Number Generation with
+    /// Arbitrary Stride", 1994, as in PCG's `pcg_advance_lcg_64`).
+    ///
+    /// `delta` steps of the LCG compose to `s ↦ A·s + C·inc` with `A = M^delta` and
+    /// `C = 1 + M + … + M^(delta−1)`, both independent of the lane, found by square-and-multiply
+    /// over the bits of `delta`. Since the period is 2⁶⁴, `advance(u64::MAX)` followed by one
+    /// step returns every lane to where it was, i.e. `advance(u64::MAX)` steps back by one.
+    pub fn advance(&mut self, delta: u64) {
+        let (mult, plus) = lcg_jump(delta);
+        let (states, incs) = self.raw();
+        let states = core::array::from_fn(|i| {
+            mult.wrapping_mul(states[i])
+                .wrapping_add(plus.wrapping_mul(incs[i]))
+        });
+        *self = Self::from_raw(states, incs);
+    }
+
+    fn from_raw(states: [u64; 8], incs: [u64; 8]) -> Self {
+        Self {
+            lo: U32x8::new(states.map(|s| s as u32)),
+            hi: U32x8::new(states.map(|s| (s >> 32) as u32)),
+            inc_lo: U32x8::new(incs.map(|s| s as u32)),
+            inc_hi: U32x8::new(incs.map(|s| (s >> 32) as u32)),
+        }
+    }
+
+    fn raw(&self) -> ([u64; 8], [u64; 8]) {
+        let join = |lo: U32x8, hi: U32x8| {
+            let (lo, hi) = (lo.to_array(), hi.to_array());
+            core::array::from_fn(|i| (u64::from(hi[i]) << 32) | u64::from(lo[i]))
+        };
+        (join(self.lo, self.hi), join(self.inc_lo, self.inc_hi))
+    }
+}
+
+/// `(M^delta, 1 + M + … + M^(delta−1))` modulo 2⁶⁴: `delta` LCG steps are
+/// `s ↦ mult·s + plus·inc`.
+fn lcg_jump(mut delta: u64) -> (u64, u64) {
+    let (mut acc_mult, mut acc_plus) = (1u64, 0u64);
+    // (cur_mult, cur_plus): the map for 2^k steps, with unit increment.
+    let (mut cur_mult, mut cur_plus) = (MULTIPLIER, 1u64);
+    while delta > 0 {
+        if delta & 1 != 0 {
+            acc_mult = acc_mult.wrapping_mul(cur_mult);
+            acc_plus = acc_plus.wrapping_mul(cur_mult).wrapping_add(cur_plus);
+        }
+        cur_plus = cur_mult.wrapping_add(1).wrapping_mul(cur_plus);
+        cur_mult = cur_mult.wrapping_mul(cur_mult);
+        delta >>= 1;
+    }
+    (acc_mult, acc_plus)
+}

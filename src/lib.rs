@@ -15,6 +15,8 @@
 //! | [`x8`] | the public packet types |
 //! | [`frame`] | orthonormal frames from a normal |
 //! | [`warp`] | square → disk, hemisphere, sphere, cone, Phong lobe, triangle, spherical triangle and rectangle, tent |
+//! | [`rng`] | `Pcg32x8`: eight PCG32 streams, lane *i* equal to `rand_pcg::Pcg32` |
+//! | [`seq`] | stateless generators of (index, dimension, seed), and point-set quality measures |
 //! | [`verify`] | (std) χ² goodness of fit and the packet-vs-scalar lane check |
 //!
 //! # One source, two widths
@@ -49,6 +51,8 @@ extern crate std;
 pub mod frame;
 pub mod lane;
 pub mod math;
+pub mod rng;
+pub mod seq;
 pub mod warp;
 pub mod x8;
 

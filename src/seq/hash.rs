@@ -32,8 +32,7 @@ fn keys(dim: u32, seed: u32) -> (u32, u32) {
 /// Generic body of [`hash3`].
 #[inline(always)]
 pub(crate) fn hash3_lane<U: U32Lane>(index: U, dim: u32, seed: u32) -> U {
-    let (k1, k2) = keys(dim, seed);
-    lowbias32(lowbias32(index.xor(U::splat(k1))).wrapping_add(U::splat(k2)))
+    hash_keyed(index, keys(dim, seed))
 }
 
 /// A 32-bit hash of `(index, dim, seed)` with full avalanche, and a bijection of `index` for a
@@ -46,4 +45,20 @@ pub(crate) fn hash3_lane<U: U32Lane>(index: U, dim: u32, seed: u32) -> U {
 #[inline]
 pub fn hash3(index: u32, dim: u32, seed: u32) -> u32 {
     hash3_lane(index, dim, seed)
+}
+
+/// The keys of an internal stream: the keys of `(dim, seed)` mixed with a `tag`, so that the
+/// generators' permutation and jitter streams are unrelated to each other and to
+/// [`independent`](super::independent)'s stream of the same `(dim, seed)`.
+#[inline(always)]
+pub(crate) fn tagged_keys(dim: u32, seed: u32, tag: u32) -> (u32, u32) {
+    let (k1, _) = keys(dim, seed);
+    let k1 = lowbias32(k1 ^ tag.wrapping_mul(GOLDEN));
+    (k1, lowbias32(k1.wrapping_add(GOLDEN)))
+}
+
+/// The two-round hash of `index` under precomputed keys: [`hash3`]'s body.
+#[inline(always)]
+pub(crate) fn hash_keyed<U: U32Lane>(index: U, (k1, k2): (u32, u32)) -> U {
+    lowbias32(lowbias32(index.xor(U::splat(k1))).wrapping_add(U::splat(k2)))
 }

@@ -1,5 +1,7 @@
 //! The integer lane the generators are written over: `u32` and [`U32x8`].
 
+use wide::{bytemuck, i32x8};
+
 use crate::x8::{F32x8, U32x8};
 
 /// 2⁻²⁴ as f32 bits: the weight of bit 8 of a 32-bit value in a 24-bit float in [0, 1).
@@ -20,6 +22,8 @@ pub trait U32Lane: Copy {
     fn splat(x: u32) -> Self;
     /// Lane-wise `a + b` mod 2³².
     fn wrapping_add(self, b: Self) -> Self;
+    /// Lane-wise `a − b` mod 2³².
+    fn wrapping_sub(self, b: Self) -> Self;
     /// Lane-wise `a · b` mod 2³².
     fn wrapping_mul(self, b: Self) -> Self;
     /// Lane-wise `a ^ b`.
@@ -30,8 +34,23 @@ pub trait U32Lane: Copy {
     fn shr(self, n: u32) -> Self;
     /// Lane-wise shift left by `n < 32`.
     fn shl(self, n: u32) -> Self;
+    /// The high word of the 64-bit product `a · b`.
+    fn mul_hi(self, b: Self) -> Self;
+    /// All ones where `self > b` (unsigned), zero elsewhere.
+    fn gt_mask(self, b: Self) -> Self;
+    /// All ones where bit 31 is set, zero elsewhere (an arithmetic shift right by 31).
+    fn top_bit_mask(self) -> Self;
+    /// `self` where `mask` is all ones, `other` where it is zero (`mask` from a `*_mask` method).
+    fn select(mask: Self, a: Self, b: Self) -> Self;
+    /// True if any lane is nonzero.
+    fn any_nonzero(self) -> bool;
+    /// The bits in reverse order, lane-wise.
+    fn reverse_bits(self) -> Self;
     /// The float with these bits.
     fn float_from_bits(self) -> Self::F;
+    /// `self / den` as the correctly rounded f32 quotient, for `self, den < 2²⁴`, where both
+    /// convert to f32 exactly (larger values are rounded to nearest before dividing).
+    fn ratio(self, den: u32) -> Self::F;
     /// `(self >> 8) · 2⁻²⁴`: a 24-bit float in [0, 1), never 1.0.
     ///
     /// Computed exactly, without an int-to-float conversion instruction: the top 23 bits go into
@@ -49,6 +68,10 @@ impl U32Lane for u32 {
     #[inline(always)]
     fn wrapping_add(self, b: Self) -> Self {
         u32::wrapping_add(self, b)
+    }
+    #[inline(always)]
+    fn wrapping_sub(self, b: Self) -> Self {
+        u32::wrapping_sub(self, b)
     }
     #[inline(always)]
     fn wrapping_mul(self, b: Self) -> Self {
@@ -71,8 +94,37 @@ impl U32Lane for u32 {
         self << n
     }
     #[inline(always)]
+    fn mul_hi(self, b: Self) -> Self {
+        ((self as u64 * b as u64) >> 32) as u32
+    }
+    #[inline(always)]
+    fn gt_mask(self, b: Self) -> Self {
+        0u32.wrapping_sub((self > b) as u32)
+    }
+    #[inline(always)]
+    fn top_bit_mask(self) -> Self {
+        ((self as i32) >> 31) as u32
+    }
+    #[inline(always)]
+    fn select(mask: Self, a: Self, b: Self) -> Self {
+        (a & mask) | (b & !mask)
+    }
+    #[inline(always)]
+    fn any_nonzero(self) -> bool {
+        self != 0
+    }
+    #[inline(always)]
+    fn reverse_bits(self) -> Self {
+        u32::reverse_bits(self)
+    }
+    #[inline(always)]
     fn float_from_bits(self) -> f32 {
         f32::from_bits(self)
+    }
+    #[inline(always)]
+    fn ratio(self, den: u32) -> f32 {
+        // Through i32, like the packet's conversion instruction: exact below 2²⁴.
+        (self as i32) as f32 / (den as i32) as f32
     }
     #[inline(always)]
     fn to_unit_f32(self) -> f32 {
@@ -89,6 +141,10 @@ impl U32Lane for U32x8 {
     #[inline(always)]
     fn wrapping_add(self, b: Self) -> Self {
         self + b
+    }
+    #[inline(always)]
+    fn wrapping_sub(self, b: Self) -> Self {
+        self - b
     }
     #[inline(always)]
     fn wrapping_mul(self, b: Self) -> Self {
@@ -111,8 +167,41 @@ impl U32Lane for U32x8 {
         self << n
     }
     #[inline(always)]
+    fn mul_hi(self, b: Self) -> Self {
+        self.mul_keep_high(b)
+    }
+    #[inline(always)]
+    fn gt_mask(self, b: Self) -> Self {
+        self.simd_gt(b)
+    }
+    #[inline(always)]
+    fn top_bit_mask(self) -> Self {
+        bytemuck::cast(bytemuck::cast::<U32x8, i32x8>(self) >> 31)
+    }
+    #[inline(always)]
+    fn select(mask: Self, a: Self, b: Self) -> Self {
+        mask.select(a, b)
+    }
+    #[inline(always)]
+    fn any_nonzero(self) -> bool {
+        self != U32x8::ZERO
+    }
+    #[inline(always)]
+    fn reverse_bits(self) -> Self {
+        // Swap halves, then bytes, nibbles, pairs and single bits: the standard five steps.
+        let x = (self >> 16) | (self << 16);
+        let x = ((x >> 8) & U32x8::splat(0x00ff_00ff)) | ((x & U32x8::splat(0x00ff_00ff)) << 8);
+        let x = ((x >> 4) & U32x8::splat(0x0f0f_0f0f)) | ((x & U32x8::splat(0x0f0f_0f0f)) << 4);
+        let x = ((x >> 2) & U32x8::splat(0x3333_3333)) | ((x & U32x8::splat(0x3333_3333)) << 2);
+        ((x >> 1) & U32x8::splat(0x5555_5555)) | ((x & U32x8::splat(0x5555_5555)) << 1)
+    }
+    #[inline(always)]
     fn float_from_bits(self) -> F32x8 {
         F32x8::from_bits(self)
+    }
+    #[inline(always)]
+    fn ratio(self, den: u32) -> F32x8 {
+        bytemuck::cast::<U32x8, i32x8>(self).round_float() / F32x8::splat((den as i32) as f32)
     }
     #[inline(always)]
     fn to_unit_f32(self) -> F32x8 {

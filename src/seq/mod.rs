@@ -14,17 +14,38 @@
 //!
 //! # Generators
 //!
-//! - [`independent`]: a counter-based hash of `(index, dimension, seed)`; every dimension and seed
-//!   is an independent-looking uniform stream (plain Monte Carlo, variance ∝ N⁻¹).
+//! | generator | structure of the first N = count (or nx·ny, or 2ᵐ) indices | 2D RMSE slope, Gaussian |
+//! |---|---|---|
+//! | [`independent`] | none: a counter-based hash of `(index, dim, seed)` | −0.5 |
+//! | [`stratified`], [`latin_hypercube`] | one point per 1/N stratum, in every dimension | |
+//! | [`jittered_2d`] | one point per cell of the nx × ny grid | ≈ −1 |
+//! | [`multi_jittered_2d`] | jittered, and one point per 1/N stratum of x and of y | ≈ −1 |
+//! | [`cmj_2d`] | the same, with one shared permutation (Kensler) | see the report |
+//! | [`sobol`], [`sobol_2d`] | dimensions 0 and 1: a (0, m, 2)-net for every N = 2ᵐ | ≈ −1.4 |
+//!
+//! The stratified families read an index as round ⌊index/N⌋ and position index mod N: each
+//! round of N consecutive indices is a complete set, with its own order and jitter. Strata are
+//! visited in a hashed order, so any prefix of a round is spread out too. Counts are clamped to
+//! [1, [`MAX_STRATA`]] = [1, 2²³] per axis (and nx·ny to 2²³), because finer strata than 2⁻²³
+//! cannot each hold a distinct f32 below 1; a count of 0 means 1. Inside those limits a value of
+//! stratum s of N is exactly in [s/N, (s+1)/N), not merely up to rounding.
+//!
+//! The dimension selects an independent pattern; two-dimensional generators take the number of a
+//! dimension *pair*, so `sobol_2d(i, d, seed)` is `(sobol(i, 2d, seed), sobol(i, 2d + 1, seed))`.
 //!
 //! [`quality`] measures point sets: L2-star discrepancy and the (0, m, 2)-net property.
 
 mod hash;
 mod lane;
 pub mod quality;
+mod sobol;
+mod stratify;
+
+use glam::Vec2;
 
 pub use hash::hash3;
 pub use lane::U32Lane;
+pub use stratify::MAX_STRATA;
 
 /// The `index`-th value of the independent uniform stream `(dim, seed)`: [`hash3`]`(index, dim,
 /// seed)` as a 24-bit float in [0, 1).
@@ -36,10 +57,83 @@ pub fn independent(index: u32, dim: u32, seed: u32) -> f32 {
     hash::hash3_lane(index, dim, seed).to_unit_f32()
 }
 
+/// One point of a stratified set of `count` strata of [0, 1): index i lands in stratum
+/// π(i mod count), π a hashed permutation of the round ⌊i/count⌋ and of `(dim, seed)`, with a
+/// hashed jitter inside it.
+///
+/// Each dimension has its own permutation, so reading several dimensions of the same indices gives
+/// a Latin hypercube ([`latin_hypercube`] is this function under the name of that property).
+/// `count` is clamped to [1, [`MAX_STRATA`]]; every index, including 2³² − 1, gives a value in
+/// [0, 1).
+#[inline]
+pub fn stratified(index: u32, count: u32, dim: u32, seed: u32) -> f32 {
+    stratify::stratified(index, count, dim, seed)
+}
+
+/// One point of a Latin hypercube of `count` points: dimension `dim` of point `index`. Every
+/// dimension is stratified into `count` strata, each visited once per round of `count` indices,
+/// with independent permutations per dimension. The same function as [`stratified`].
+#[inline]
+pub fn latin_hypercube(index: u32, count: u32, dim: u32, seed: u32) -> f32 {
+    stratify::stratified(index, count, dim, seed)
+}
+
+/// One point of a jittered nx × ny grid: index i visits cell π(i mod nx·ny), π a hashed
+/// permutation of the round and of `(dim, seed)`, at a hashed position inside it.
+///
+/// `dim` numbers dimension pairs. nx is clamped to [1, 2²³] and ny to [1, 2²³/nx].
+#[inline]
+pub fn jittered_2d(index: u32, nx: u32, ny: u32, dim: u32, seed: u32) -> Vec2 {
+    let (x, y) = stratify::jittered_2d(index, nx, ny, dim, seed);
+    Vec2::new(x, y)
+}
+
+/// One point of a multi-jittered set of nx·ny points (Chiu, Shirley and Wang 1994): jittered on
+/// the nx × ny grid, and x and y each one point per 1/(nx·ny) stratum. The fine strata are
+/// shuffled by an independent permutation per column and per row, so x and y do not share a
+/// pattern.
+///
+/// `dim` numbers dimension pairs; the grid is clamped as in [`jittered_2d`].
+#[inline]
+pub fn multi_jittered_2d(index: u32, nx: u32, ny: u32, dim: u32, seed: u32) -> Vec2 {
+    let (x, y) = stratify::multi_jittered_2d(index, nx, ny, dim, seed, false);
+    Vec2::new(x, y)
+}
+
+/// Kensler's correlated multi-jitter (Pixar Technical Memo 13-01, 2013): the structure of
+/// [`multi_jittered_2d`], but every column shares one permutation and every row another.
+///
+/// That makes a cell's fine x-offset a function of its row alone, so the x–y interaction is not
+/// stratified: on smooth 2D integrands it converges more slowly than [`multi_jittered_2d`] at
+/// large N (the report measures both). Kept because it is the well-known, widely used form.
+#[inline]
+pub fn cmj_2d(index: u32, nx: u32, ny: u32, dim: u32, seed: u32) -> Vec2 {
+    let (x, y) = stratify::multi_jittered_2d(index, nx, ny, dim, seed, true);
+    Vec2::new(x, y)
+}
+
+/// Owen-scrambled Sobol (Burley 2020): dimension `dim` of point `index`, for `seed`.
+///
+/// Dimensions 0 and 1 of one seed form a (0, m, 2)-net for every prefix of N = 2ᵐ indices, and
+/// every dimension alone is one point per 1/N stratum for such N. Dimensions go in sets of four
+/// with independent seeds (padding), so any `dim` works. See the `sobol` module notes in the
+/// source for the construction.
+#[inline]
+pub fn sobol(index: u32, dim: u32, seed: u32) -> f32 {
+    sobol::sobol_bits(index, dim, seed).to_unit_f32()
+}
+
+/// Dimensions 2·`dim` and 2·`dim` + 1 of [`sobol`]: `sobol_2d(i, 0, seed)` is the net.
+#[inline]
+pub fn sobol_2d(index: u32, dim: u32, seed: u32) -> Vec2 {
+    let d = dim.wrapping_mul(2);
+    Vec2::new(sobol(index, d, seed), sobol(index, d.wrapping_add(1), seed))
+}
+
 /// The packet forms: 8 indices at a time, the same dimension and seed in every lane.
 pub mod x8 {
-    use super::{U32Lane, hash};
-    use crate::x8::{F32x8, U32x8};
+    use super::{U32Lane, hash, stratify};
+    use crate::x8::{F32x8, U32x8, Vec2x8};
 
     /// [`super::independent`] on 8 indices: lane *i* equals `independent(index[i], dim, seed)`
     /// bit for bit.
@@ -52,5 +146,54 @@ pub mod x8 {
     #[inline]
     pub fn hash3(index: U32x8, dim: u32, seed: u32) -> U32x8 {
         hash::hash3_lane(index, dim, seed)
+    }
+
+    /// [`super::stratified`] on 8 indices, bit for bit.
+    #[inline]
+    pub fn stratified(index: U32x8, count: u32, dim: u32, seed: u32) -> F32x8 {
+        stratify::stratified(index, count, dim, seed)
+    }
+
+    /// [`super::latin_hypercube`] on 8 indices, bit for bit.
+    #[inline]
+    pub fn latin_hypercube(index: U32x8, count: u32, dim: u32, seed: u32) -> F32x8 {
+        stratify::stratified(index, count, dim, seed)
+    }
+
+    /// [`super::jittered_2d`] on 8 indices, bit for bit.
+    #[inline]
+    pub fn jittered_2d(index: U32x8, nx: u32, ny: u32, dim: u32, seed: u32) -> Vec2x8 {
+        let (x, y) = stratify::jittered_2d(index, nx, ny, dim, seed);
+        Vec2x8 { x, y }
+    }
+
+    /// [`super::multi_jittered_2d`] on 8 indices, bit for bit.
+    #[inline]
+    pub fn multi_jittered_2d(index: U32x8, nx: u32, ny: u32, dim: u32, seed: u32) -> Vec2x8 {
+        let (x, y) = stratify::multi_jittered_2d(index, nx, ny, dim, seed, false);
+        Vec2x8 { x, y }
+    }
+
+    /// [`super::cmj_2d`] on 8 indices, bit for bit.
+    #[inline]
+    pub fn cmj_2d(index: U32x8, nx: u32, ny: u32, dim: u32, seed: u32) -> Vec2x8 {
+        let (x, y) = stratify::multi_jittered_2d(index, nx, ny, dim, seed, true);
+        Vec2x8 { x, y }
+    }
+
+    /// [`super::sobol`] on 8 indices, bit for bit.
+    #[inline]
+    pub fn sobol(index: U32x8, dim: u32, seed: u32) -> F32x8 {
+        super::sobol::sobol_bits(index, dim, seed).to_unit_f32()
+    }
+
+    /// [`super::sobol_2d`] on 8 indices, bit for bit.
+    #[inline]
+    pub fn sobol_2d(index: U32x8, dim: u32, seed: u32) -> Vec2x8 {
+        let d = dim.wrapping_mul(2);
+        Vec2x8 {
+            x: sobol(index, d, seed),
+            y: sobol(index, d.wrapping_add(1), seed),
+        }
     }
 }

@@ -1,0 +1,145 @@
+//! Owen-scrambled Sobol points by hashing (Burley, "Practical Hash-based Owen Scrambling",
+//! JCGT 9(4), 2020), written once over [`U32Lane`].
+//!
+//! # Construction
+//!
+//! Dimension `dim` belongs to the set ⌊dim/4⌋ and uses Sobol dimension dim mod 4: the bit-reversed
+//! index (van der Corput) for 0 and the first three Joe–Kuo dimensions for 1–3. Each set has its
+//! own seed, so sets are independent scrambles: this is the padding that reaches any dimension.
+//!
+//! 1. The index is shuffled by a nested uniform scramble of its bits, seeded per set. It sends
+//!    the first 2ᵐ indices onto an aligned block of 2ᵐ Sobol indices, which is itself a
+//!    (0, m, 2)-net in dimensions 0 and 1, so every power-of-two prefix stays a net.
+//! 2. The Sobol value is the GF(2) product of the generator matrix and the index bits.
+//! 3. The value is Owen-scrambled, seeded per dimension.
+//!
+//! A nested uniform scramble flips each bit with a coin that depends on the seed and on the bits
+//! above it. In bit-reversed order that is "each bit depends on the bits below", which additions
+//! and multiplications have: Burley's hash `x += seed; x ^= x·c₁; …` (the Laine–Karras
+//! construction with his constants, all `x ^= x·c` with c even so each step is invertible).
+//! The whole pipeline is kept in reversed order so that only one reversal is needed per
+//! scramble: the matrix columns are stored bit-reversed and indexed from the top bit.
+
+use super::U32Lane;
+use super::hash::lowbias32;
+
+/// Joe–Kuo ("Constructing Sobol sequences with better two-dimensional projections", SIAM J. Sci.
+/// Comput. 30, 2008; file new-joe-kuo-6.21201) parameters of their dimensions 2, 3 and 4: degree
+/// s, coefficient bits a and initial direction integers m₁…m_s.
+const JOE_KUO: [(u32, u32, [u32; 3]); 3] =
+    [(1, 0, [1, 0, 0]), (2, 1, [1, 3, 0]), (3, 1, [1, 3, 1])];
+
+/// The 32 direction numbers vₖ = mₖ·2³²⁻ᵏ of a Joe–Kuo dimension, from the recurrence
+/// mₖ = 2ˢ·mₖ₋ₛ ⊕ mₖ₋ₛ ⊕ (⊕ᵢ₌₁..ₛ₋₁ 2ⁱ·aᵢ·mₖ₋ᵢ), aᵢ the i-th bit of a from the top of its s − 1 bits.
+const fn direction_numbers(s: u32, a: u32, init: [u32; 3]) -> [u32; 32] {
+    let mut m = [0u32; 33]; // m[k] for k = 1..=32
+    let mut k = 1;
+    while k <= 32 {
+        m[k] = if k <= s as usize {
+            init[k - 1]
+        } else {
+            let mut x = (m[k - s as usize] << s) ^ m[k - s as usize];
+            let mut i = 1;
+            while i < s {
+                let a_i = (a >> (s - 1 - i)) & 1;
+                x ^= (a_i * m[k - i as usize]) << i;
+                i += 1;
+            }
+            x
+        };
+        k += 1;
+    }
+    let mut v = [0u32; 32];
+    let mut k = 1;
+    while k <= 32 {
+        // mₖ is odd and below 2ᵏ: shifted to the top, its lowest set bit is bit 32 − k.
+        v[k - 1] = m[k] << (32 - k);
+        k += 1;
+    }
+    v
+}
+
+/// The generator matrices of dimensions 1–3 in the form the hot loop wants: entry p of dimension
+/// d is the bit-reversed direction number v_{32−p}, the contribution of bit 31 − p of the index,
+/// so the loop walks the reversed index from its top bit.
+const MATRICES: [[u32; 32]; 3] = {
+    let mut out = [[0u32; 32]; 3];
+    let mut d = 0;
+    while d < 3 {
+        let (s, a, init) = JOE_KUO[d];
+        let v = direction_numbers(s, a, init);
+        let mut p = 0;
+        while p < 32 {
+            out[d][p] = v[31 - p].reverse_bits();
+            p += 1;
+        }
+        d += 1;
+    }
+    out
+};
+
+/// Burley's hash in reversed-bit order: a nested uniform scramble of the bit-reversed value.
+#[inline(always)]
+fn scramble_reversed<U: U32Lane>(x: U, seed: u32) -> U {
+    let x = x.wrapping_add(U::splat(seed));
+    let x = x.xor(x.wrapping_mul(U::splat(0x6c50_b47c)));
+    let x = x.xor(x.wrapping_mul(U::splat(0xb82f_1e52)));
+    let x = x.xor(x.wrapping_mul(U::splat(0xc7af_e638)));
+    x.xor(x.wrapping_mul(U::splat(0x8d22_f6e6)))
+}
+
+/// The seeds of a dimension: (index shuffle of its set, value scramble of the dimension).
+#[inline(always)]
+fn seeds(dim: u32, seed: u32) -> (u32, u32) {
+    let set_seed = lowbias32(lowbias32(seed ^ 0x5851_f42d) ^ (dim / 4));
+    let index_seed = lowbias32(set_seed ^ 0x0bad_5eed);
+    let value_seed = lowbias32(set_seed.wrapping_add(dim % 4 + 1));
+    (index_seed, value_seed)
+}
+
+/// The 32-bit Owen-scrambled Sobol value of `index` in dimension `dim` for `seed`.
+#[inline(always)]
+pub(crate) fn sobol_bits<U: U32Lane>(index: U, dim: u32, seed: u32) -> U {
+    let (index_seed, value_seed) = seeds(dim, seed);
+    // The shuffled index, still bit-reversed: its top bit is the index's bit 0.
+    let reversed_index = scramble_reversed(index.reverse_bits(), index_seed);
+    let reversed_value = match dim % 4 {
+        // Dimension 0 is the van der Corput sequence: the reversed value is the index itself.
+        0 => reversed_index.reverse_bits(),
+        d => {
+            let columns = &MATRICES[d as usize - 1];
+            let mut bits = reversed_index;
+            let mut value = U::splat(0);
+            for &column in columns {
+                value = value.xor(bits.top_bit_mask().and(U::splat(column)));
+                bits = bits.shl(1);
+            }
+            value
+        }
+    };
+    scramble_reversed(reversed_value, value_seed).reverse_bits()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The direction integers mₖ, k = 1..8, of Joe–Kuo dimensions 2–4, worked by hand from the
+    /// published (s, a, m) and the paper's recurrence (the first two rows are also the classic
+    /// Bratley–Fox values).
+    #[test]
+    fn direction_integers_match_the_published_ones() {
+        let expected: [[u32; 8]; 3] = [
+            [1, 3, 5, 15, 17, 51, 85, 255],
+            [1, 3, 3, 9, 29, 23, 71, 197],
+            [1, 3, 1, 5, 31, 29, 81, 147],
+        ];
+        for (d, want) in expected.iter().enumerate() {
+            let (s, a, init) = JOE_KUO[d];
+            let v = direction_numbers(s, a, init);
+            for k in 1..=8usize {
+                assert_eq!(v[k - 1] >> (32 - k), want[k - 1], "dim {} k {k}", d + 1);
+            }
+        }
+    }
+}

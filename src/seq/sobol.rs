@@ -59,9 +59,9 @@ const fn direction_numbers(s: u32, a: u32, init: [u32; 3]) -> [u32; 32] {
     v
 }
 
-/// The generator matrices of dimensions 1–3 in the form the hot loop wants: entry p of dimension
-/// d is the bit-reversed direction number v_{32−p}, the contribution of bit 31 − p of the index,
-/// so the loop walks the reversed index from its top bit.
+/// The generator matrices of dimensions 1–3 in the form the hot loop wants: entry p is the
+/// bit-reversed direction number v_{p+1}, the contribution of index bit p, which the loop reads
+/// as bit 31 − p of the bit-reversed index, walking it from the top.
 const MATRICES: [[u32; 32]; 3] = {
     let mut out = [[0u32; 32]; 3];
     let mut d = 0;
@@ -70,7 +70,7 @@ const MATRICES: [[u32; 32]; 3] = {
         let v = direction_numbers(s, a, init);
         let mut p = 0;
         while p < 32 {
-            out[d][p] = v[31 - p].reverse_bits();
+            out[d][p] = v[p].reverse_bits();
             p += 1;
         }
         d += 1;

@@ -35,6 +35,7 @@
 //!
 //! [`quality`] measures point sets: L2-star discrepancy and the (0, m, 2)-net property.
 
+mod camera;
 mod hash;
 mod lane;
 pub mod quality;
@@ -43,6 +44,7 @@ mod stratify;
 
 use glam::Vec2;
 
+pub use camera::PixelFilter;
 pub use hash::hash3;
 pub use lane::U32Lane;
 pub use stratify::MAX_STRATA;
@@ -130,10 +132,80 @@ pub fn sobol_2d(index: u32, dim: u32, seed: u32) -> Vec2 {
     Vec2::new(sobol(index, d, seed), sobol(index, d.wrapping_add(1), seed))
 }
 
+/// One sample of the 5D integral of a pixel (Pharr, CS348b "Monte Carlo II"): a film position,
+/// a lens position and a time.
+///
+/// [`CameraSample::generate`] draws them from three padded Owen-scrambled Sobol pairs keyed by
+/// (pixel, seed): film from one pair, lens from another, time from the first dimension of a
+/// third. Each pair has its own index shuffle, so no two dimensions share a pattern, and each is a
+/// (0, 2)-sequence, so the first 2ᵐ samples of a pixel are stratified in film and in lens.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct CameraSample {
+    /// The film position in pixel units: in [pixel, pixel + 1)² for [`PixelFilter::Box`], within
+    /// [pixel − ½, pixel + 1½]² for [`PixelFilter::Tent`] (up to f32 rounding of large pixel
+    /// coordinates).
+    pub film: Vec2,
+    /// The lens position on the unit disk (concentric map); scale by the aperture radius.
+    pub lens: Vec2,
+    /// The time, uniform in [open, close).
+    pub time: f32,
+}
+
+impl CameraSample {
+    /// Sample `index` of `pixel` for `seed`, with film offsets from `filter` and the shutter open
+    /// over `shutter = (open, close)`.
+    ///
+    /// Times are uniform in [open, close) and never equal `close`. A shutter with close ≤ open
+    /// gives `open` for every sample (an instantaneous exposure); a NaN or infinite end gives NaN
+    /// times, as no uniform time exists. Every index, pixel and seed is valid.
+    #[inline]
+    pub fn generate(
+        pixel: [u32; 2],
+        index: u32,
+        seed: u32,
+        filter: PixelFilter,
+        shutter: (f32, f32),
+    ) -> Self {
+        let (film, lens, time) = camera::camera_sample(pixel, index, seed, filter, shutter);
+        Self {
+            film: film.into(),
+            lens: lens.into(),
+            time,
+        }
+    }
+}
+
 /// The packet forms: 8 indices at a time, the same dimension and seed in every lane.
 pub mod x8 {
-    use super::{U32Lane, hash, stratify};
+    use super::{PixelFilter, U32Lane, camera, hash, stratify};
     use crate::x8::{F32x8, U32x8, Vec2x8};
+
+    /// [`super::CameraSample`] for 8 indices of one pixel.
+    #[derive(Clone, Copy, Debug, PartialEq, Default)]
+    pub struct CameraSample {
+        /// Film positions in pixel units.
+        pub film: Vec2x8,
+        /// Lens positions on the unit disk.
+        pub lens: Vec2x8,
+        /// Times in [open, close).
+        pub time: F32x8,
+    }
+
+    impl CameraSample {
+        /// [`super::CameraSample::generate`] on 8 indices: lane *i* equals the scalar sample of
+        /// `index[i]`, bit for bit.
+        #[inline]
+        pub fn generate(
+            pixel: [u32; 2],
+            index: U32x8,
+            seed: u32,
+            filter: PixelFilter,
+            shutter: (f32, f32),
+        ) -> Self {
+            let (film, lens, time) = camera::camera_sample(pixel, index, seed, filter, shutter);
+            Self { film, lens, time }
+        }
+    }
 
     /// [`super::independent`] on 8 indices: lane *i* equals `independent(index[i], dim, seed)`
     /// bit for bit.

@@ -4,7 +4,12 @@
 //! the same measurements must reject them.
 
 use glam::Vec2;
-use mcsample::seq::{self, quality::l2_star_discrepancy};
+use mcsample::seq::{
+    self,
+    quality::{
+        self, DISK_INTEGRAL, GAUSSIAN_INTEGRAL, disk_indicator, gaussian, l2_star_discrepancy,
+    },
+};
 
 /// A 2D point-set family: (index, N, seed) → point, the set of size N being indices 0..N.
 type Family = fn(u32, u32, u32) -> Vec2;
@@ -40,42 +45,8 @@ fn sobol(i: u32, _n: u32, s: u32) -> Vec2 {
     seq::sobol_2d(i, 0, s)
 }
 
-/// ∫∫ e^{−x²−y²} over the unit square: (√π/2 · erf 1)².
-const GAUSSIAN: f64 = 0.557_746_285_351_034;
-
-fn gaussian(p: Vec2) -> f64 {
-    (-(p.x as f64).powi(2) - (p.y as f64).powi(2)).exp()
-}
-/// 1[x² + y² < 2/π], whose integral is ½.
-fn disk(p: Vec2) -> f64 {
-    let r2 = (p.x as f64).powi(2) + (p.y as f64).powi(2);
-    if r2 < 2.0 / std::f64::consts::PI {
-        1.0
-    } else {
-        0.0
-    }
-}
-
-/// The least-squares slope of log RMSE against log N, N = 16, 32, …, 4096, over `seeds` seeds.
 fn rmse_slope(family: Family, f: fn(Vec2) -> f64, exact: f64, seeds: u32) -> f64 {
-    let (mut xs, mut ys) = (vec![], vec![]);
-    for k in 4..=12 {
-        let n = 1u32 << k;
-        let mse: f64 = (0..seeds)
-            .map(|s| {
-                let est = (0..n).map(|i| f(family(i, n, s))).sum::<f64>() / n as f64;
-                (est - exact).powi(2)
-            })
-            .sum::<f64>()
-            / seeds as f64;
-        xs.push((n as f64).ln());
-        ys.push(0.5 * mse.ln());
-    }
-    let m = xs.len() as f64;
-    let (mx, my) = (xs.iter().sum::<f64>() / m, ys.iter().sum::<f64>() / m);
-    let sxy: f64 = xs.iter().zip(&ys).map(|(x, y)| (x - mx) * (y - my)).sum();
-    let sxx: f64 = xs.iter().map(|x| (x - mx).powi(2)).sum();
-    sxy / sxx
+    quality::rmse_slope(family, f, exact, 4..=12, seeds)
 }
 
 /// RMS over 32 seeds of the L2-star discrepancy of the first 1024 points, as a fraction of the
@@ -102,7 +73,7 @@ const SEEDS: u32 = 64;
 
 #[test]
 fn gaussian_slopes_meet_the_targets() {
-    let slope = |f: Family| rmse_slope(f, gaussian, GAUSSIAN, SEEDS);
+    let slope = |f: Family| rmse_slope(f, gaussian, GAUSSIAN_INTEGRAL, SEEDS);
     let independent = slope(independent);
     assert!(
         (-0.6..=-0.4).contains(&independent),
@@ -123,8 +94,8 @@ fn gaussian_slopes_meet_the_targets() {
 /// records the blind spot, and would catch CMJ silently turning into either.
 #[test]
 fn cmj_slope_shows_its_blind_spot() {
-    let cmj = rmse_slope(cmj, gaussian, GAUSSIAN, SEEDS);
-    let mj = rmse_slope(multi_jittered, gaussian, GAUSSIAN, SEEDS);
+    let cmj = rmse_slope(cmj, gaussian, GAUSSIAN_INTEGRAL, SEEDS);
+    let mj = rmse_slope(multi_jittered, gaussian, GAUSSIAN_INTEGRAL, SEEDS);
     assert!((-0.9..=-0.65).contains(&cmj), "cmj slope {cmj:.3}");
     assert!(
         mj < cmj - 0.15,
@@ -136,7 +107,7 @@ fn cmj_slope_shows_its_blind_spot() {
 /// (REFERENCES §5: about −0.75 for jittered and Sobol).
 #[test]
 fn disk_slopes() {
-    let slope = |f: Family| rmse_slope(f, disk, 0.5, SEEDS);
+    let slope = |f: Family| rmse_slope(f, disk_indicator, DISK_INTEGRAL, SEEDS);
     let independent = slope(independent);
     assert!(
         (-0.6..=-0.4).contains(&independent),
@@ -155,12 +126,12 @@ fn disk_slopes() {
 
 #[test]
 fn slope_targets_reject_broken_sets() {
-    let independent = rmse_slope(independent, gaussian, GAUSSIAN, SEEDS);
+    let independent = rmse_slope(independent, gaussian, GAUSSIAN_INTEGRAL, SEEDS);
     assert!(
         independent > -0.9,
         "independent passes the jitter target: {independent:.3}"
     );
-    let unpaired = rmse_slope(sobol_unpaired, gaussian, GAUSSIAN, SEEDS);
+    let unpaired = rmse_slope(sobol_unpaired, gaussian, GAUSSIAN_INTEGRAL, SEEDS);
     assert!(
         unpaired > -1.25,
         "unpaired sobol passes the sobol target: {unpaired:.3}"

@@ -188,12 +188,7 @@ impl U32Lane for U32x8 {
     }
     #[inline(always)]
     fn reverse_bits(self) -> Self {
-        // Swap halves, then bytes, nibbles, pairs and single bits: the standard five steps.
-        let x = (self >> 16) | (self << 16);
-        let x = ((x >> 8) & U32x8::splat(0x00ff_00ff)) | ((x & U32x8::splat(0x00ff_00ff)) << 8);
-        let x = ((x >> 4) & U32x8::splat(0x0f0f_0f0f)) | ((x & U32x8::splat(0x0f0f_0f0f)) << 4);
-        let x = ((x >> 2) & U32x8::splat(0x3333_3333)) | ((x & U32x8::splat(0x3333_3333)) << 2);
-        ((x >> 1) & U32x8::splat(0x5555_5555)) | ((x & U32x8::splat(0x5555_5555)) << 1)
+        reverse_bits_x8(self)
     }
     #[inline(always)]
     fn float_from_bits(self) -> F32x8 {
@@ -225,4 +220,50 @@ where
         .wrapping_mul(U::splat(TWO_POW_M24_BITS))
         .float_from_bits();
     hi + lo
+}
+
+/// Bit reversal of each lane with AVX2: one byte shuffle reverses the bytes of each lane, and two
+/// 16-entry lookups (also byte shuffles) reverse the bits of each byte from its two nibbles. Seven
+/// instructions instead of the twenty-odd of the shift-and-mask form.
+#[cfg(target_feature = "avx2")]
+#[inline(always)]
+fn reverse_bits_x8(x: U32x8) -> U32x8 {
+    use wide::u8x32;
+    const fn tables() -> ([u8; 32], [u8; 32], [u8; 32]) {
+        let (mut bytes, mut low, mut high) = ([0u8; 32], [0u8; 32], [0u8; 32]);
+        let mut i = 0;
+        while i < 32 {
+            // The shuffle indexes within each 16-byte half.
+            bytes[i] = ((i % 16) / 4 * 4 + 3 - i % 4) as u8;
+            let nibble = (i % 16) as u8;
+            let reversed = nibble.reverse_bits() >> 4;
+            low[i] = reversed << 4; // the low nibble goes to the top
+            high[i] = reversed;
+            i += 1;
+        }
+        (bytes, low, high)
+    }
+    const TABLES: ([u8; 32], [u8; 32], [u8; 32]) = tables();
+    let swapped: U32x8 = bytemuck::cast(
+        bytemuck::cast::<U32x8, u8x32>(x).swizzle_half_relaxed(u8x32::from(TABLES.0)),
+    );
+    let nibbles = U32x8::splat(0x0f0f_0f0f);
+    let low = bytemuck::cast::<U32x8, u8x32>(swapped & nibbles);
+    let high = bytemuck::cast::<U32x8, u8x32>((swapped >> 4) & nibbles);
+    bytemuck::cast(
+        u8x32::from(TABLES.1).swizzle_half_relaxed(low)
+            | u8x32::from(TABLES.2).swizzle_half_relaxed(high),
+    )
+}
+
+/// Bit reversal of each lane without byte shuffles: swap halves, then bytes, nibbles, pairs and
+/// single bits.
+#[cfg(not(target_feature = "avx2"))]
+#[inline(always)]
+fn reverse_bits_x8(x: U32x8) -> U32x8 {
+    let x = (x >> 16) | (x << 16);
+    let x = ((x >> 8) & U32x8::splat(0x00ff_00ff)) | ((x & U32x8::splat(0x00ff_00ff)) << 8);
+    let x = ((x >> 4) & U32x8::splat(0x0f0f_0f0f)) | ((x & U32x8::splat(0x0f0f_0f0f)) << 4);
+    let x = ((x >> 2) & U32x8::splat(0x3333_3333)) | ((x & U32x8::splat(0x3333_3333)) << 2);
+    ((x >> 1) & U32x8::splat(0x5555_5555)) | ((x & U32x8::splat(0x5555_5555)) << 1)
 }

@@ -1,5 +1,6 @@
-//! Measures of point-set quality in the unit square: L2-star discrepancy and the elementary
-//! interval ((0, m, 2)-net) property. Allocation-free and usable without `std`.
+//! Measures of point-set quality in the unit square: L2-star discrepancy, the elementary
+//! interval ((0, m, 2)-net) property, and the RMSE convergence slope on the two test integrands
+//! of REFERENCES §5. Allocation-free and usable without `std`.
 
 use glam::Vec2;
 
@@ -115,4 +116,67 @@ pub fn net_violation(points: &[Vec2], m: u32) -> Option<NetViolation> {
 /// False when m > [`MAX_NET_M`].
 pub fn is_elementary_net(points: &[Vec2], m: u32) -> bool {
     net_violation(points, m).is_none()
+}
+
+/// e^{−x²−y²}: the smooth test integrand of REFERENCES §5, whose integral over the unit square is
+/// [`GAUSSIAN_INTEGRAL`].
+pub fn gaussian(p: Vec2) -> f64 {
+    let (x, y) = (p.x as f64, p.y as f64);
+    libm::exp(-x * x - y * y)
+}
+
+/// ∫∫ e^{−x²−y²} over [0, 1]² = (√π/2 · erf 1)².
+pub const GAUSSIAN_INTEGRAL: f64 = 0.557_746_285_351_034;
+
+/// 1[x² + y² < 2/π]: the discontinuous test integrand of REFERENCES §5, a quarter disk whose
+/// area is [`DISK_INTEGRAL`].
+pub fn disk_indicator(p: Vec2) -> f64 {
+    let (x, y) = (p.x as f64, p.y as f64);
+    if x * x + y * y < core::f64::consts::FRAC_2_PI {
+        1.0
+    } else {
+        0.0
+    }
+}
+
+/// ∫∫ 1[x² + y² < 2/π] over [0, 1]² = ½.
+pub const DISK_INTEGRAL: f64 = 0.5;
+
+/// The convergence rate of a 2D point-set family on an integrand: the least-squares slope of
+/// log RMSE against log N, for N = 2ᵏ with k in `log2_n`.
+///
+/// `points(i, n, seed)` is point i of the family's set of size n for `seed` (the set is indices
+/// 0..n); the RMSE at each N is over seeds 0..`seeds` of the N-point estimate of ∫ f against
+/// `exact`. Plain Monte Carlo gives −0.5; REFERENCES §5 lists the rates of the others.
+/// Allocation-free; the cost is seeds · Σ N evaluations. Returns NaN for fewer than two sizes.
+pub fn rmse_slope(
+    points: impl Fn(u32, u32, u32) -> Vec2,
+    f: impl Fn(Vec2) -> f64,
+    exact: f64,
+    log2_n: core::ops::RangeInclusive<u32>,
+    seeds: u32,
+) -> f64 {
+    // Running sums for the regression of y = ln RMSE on x = ln N.
+    let (mut m, mut sx, mut sy, mut sxx, mut sxy) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    for k in log2_n {
+        let n = 1u32 << k;
+        let mut mse = 0.0;
+        for seed in 0..seeds {
+            let mut sum = 0.0;
+            for i in 0..n {
+                sum += f(points(i, n, seed));
+            }
+            mse += (sum / n as f64 - exact).powi(2);
+        }
+        let (x, y) = (libm::log(n as f64), 0.5 * libm::log(mse / seeds as f64));
+        m += 1.0;
+        sx += x;
+        sy += y;
+        sxx += x * x;
+        sxy += x * y;
+    }
+    if m < 2.0 {
+        return f64::NAN;
+    }
+    (m * sxy - sx * sy) / (m * sxx - sx * sx)
 }

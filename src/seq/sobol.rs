@@ -18,7 +18,8 @@
 //! and multiplications have: Burley's hash `x += seed; x ^= x·c₁; …` (the Laine–Karras
 //! construction with his constants, all `x ^= x·c` with c even so each step is invertible).
 //! The whole pipeline is kept in reversed order so that only one reversal is needed per
-//! scramble: the matrix columns are stored bit-reversed and indexed from the top bit.
+//! scramble: the matrix columns are stored bit-reversed and indexed from the top bit. Dimensions
+//! 0 and 1 (van der Corput and Pascal) need no matrix loop at all; 2 and 3 take 32 column steps.
 
 use super::U32Lane;
 use super::hash::lowbias32;
@@ -88,6 +89,26 @@ fn scramble_reversed<U: U32Lane>(x: U, seed: u32) -> U {
     x.xor(x.wrapping_mul(U::splat(0x8d22_f6e6)))
 }
 
+/// Sobol dimension 1 without its matrix loop. Its generator matrix is Pascal's triangle mod 2
+/// (mₖ = 2mₖ₋₁ ⊕ mₖ₋₁): digit r of the value is the xor of the index bits c with binom(c, r) odd,
+/// which by Lucas's theorem are the c whose bits include r's. In reversed order (digit r at bit
+/// r) that xor over supersets is five shift-and-mask steps, one per bit of the position, instead
+/// of 32 column steps.
+#[inline(always)]
+fn pascal<U: U32Lane>(index: U) -> U {
+    let mut x = index;
+    for (shift, mask) in [
+        (1, 0x5555_5555),
+        (2, 0x3333_3333),
+        (4, 0x0f0f_0f0f),
+        (8, 0x00ff_00ff),
+        (16, 0x0000_ffff),
+    ] {
+        x = x.xor(x.shr(shift).and(U::splat(mask)));
+    }
+    x
+}
+
 /// The seeds of a dimension: (index shuffle of its set, value scramble of the dimension).
 #[inline(always)]
 fn seeds(dim: u32, seed: u32) -> (u32, u32) {
@@ -106,6 +127,7 @@ pub(crate) fn sobol_bits<U: U32Lane>(index: U, dim: u32, seed: u32) -> U {
     let reversed_value = match dim % 4 {
         // Dimension 0 is the van der Corput sequence: the reversed value is the index itself.
         0 => reversed_index.reverse_bits(),
+        1 => pascal(reversed_index.reverse_bits()),
         d => {
             let columns = &MATRICES[d as usize - 1];
             let mut bits = reversed_index;

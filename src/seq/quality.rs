@@ -166,7 +166,8 @@ pub fn rmse_slope(
             for i in 0..n {
                 sum += f(points(i, n, seed));
             }
-            mse += (sum / n as f64 - exact).powi(2);
+            let error = sum / n as f64 - exact;
+            mse += error * error;
         }
         let (x, y) = (libm::log(n as f64), 0.5 * libm::log(mse / seeds as f64));
         m += 1.0;

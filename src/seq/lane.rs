@@ -34,6 +34,9 @@ pub trait U32Lane: Copy {
     fn shr(self, n: u32) -> Self;
     /// Lane-wise shift left by `n < 32`.
     fn shl(self, n: u32) -> Self;
+    /// (⌊self/d⌋, self mod d), lane-wise, for d ≥ 1: the hardware divide in scalar code, a
+    /// multiply by a precomputed reciprocal in packets (exact in both, so the results agree).
+    fn div_rem(self, d: u32) -> (Self, Self);
     /// The high word of the 64-bit product `a · b`.
     fn mul_hi(self, b: Self) -> Self;
     /// All ones where `self > b` (unsigned), zero elsewhere.
@@ -92,6 +95,10 @@ impl U32Lane for u32 {
     #[inline(always)]
     fn shl(self, n: u32) -> Self {
         self << n
+    }
+    #[inline(always)]
+    fn div_rem(self, d: u32) -> (Self, Self) {
+        (self / d, self % d)
     }
     #[inline(always)]
     fn mul_hi(self, b: Self) -> Self {
@@ -165,6 +172,10 @@ impl U32Lane for U32x8 {
     #[inline(always)]
     fn shl(self, n: u32) -> Self {
         self << n
+    }
+    #[inline(always)]
+    fn div_rem(self, d: u32) -> (Self, Self) {
+        Divisor::new(d).div_rem(self)
     }
     #[inline(always)]
     fn mul_hi(self, b: Self) -> Self {
@@ -266,4 +277,79 @@ fn reverse_bits_x8(x: U32x8) -> U32x8 {
     let x = ((x >> 4) & U32x8::splat(0x0f0f_0f0f)) | ((x & U32x8::splat(0x0f0f_0f0f)) << 4);
     let x = ((x >> 2) & U32x8::splat(0x3333_3333)) | ((x & U32x8::splat(0x3333_3333)) << 2);
     ((x >> 1) & U32x8::splat(0x5555_5555)) | ((x & U32x8::splat(0x5555_5555)) << 1)
+}
+
+/// Unsigned division of a lane by a scalar d ≥ 1 through a precomputed multiplier (Granlund and
+/// Montgomery, "Division by invariant integers using multiplication", PLDI 1994, §4): with
+/// l = ⌈log₂ d⌉ and m = ⌊2³²(2ˡ − d)/d⌋ + 1, q = (t + ((n − t) >> 1)) >> (l − 1), t = mulhi(m, n),
+/// is ⌊n/d⌋ for every 32-bit n (d = 1 uses shifts 0 and 0).
+#[derive(Clone, Copy, Debug)]
+struct Divisor {
+    d: u32,
+    m: u32,
+    shift1: u32,
+    shift2: u32,
+}
+
+impl Divisor {
+    /// The divisor `d`, which must be ≥ 1.
+    #[inline(always)]
+    fn new(d: u32) -> Self {
+        let l = 32 - (d - 1).leading_zeros(); // ⌈log₂ d⌉
+        let m = ((((1u64 << l) - d as u64) << 32) / d as u64 + 1) as u32;
+        Self {
+            d,
+            m,
+            shift1: l.min(1),
+            shift2: l.saturating_sub(1),
+        }
+    }
+
+    /// (⌊n/d⌋, n mod d), lane-wise.
+    #[inline(always)]
+    fn div_rem<U: U32Lane>(self, n: U) -> (U, U) {
+        let t = n.mul_hi(U::splat(self.m));
+        let q = t
+            .wrapping_add(n.wrapping_sub(t).shr(self.shift1))
+            .shr(self.shift2);
+        (q, n.wrapping_sub(q.wrapping_mul(U::splat(self.d))))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn divisor_matches_division() {
+        let ds = [
+            1u32,
+            2,
+            3,
+            5,
+            7,
+            10,
+            641,
+            1000,
+            1 << 23,
+            (1 << 31) + 1,
+            u32::MAX,
+        ];
+        let mut x = 0x1234_5678u32;
+        for &d in &ds {
+            let div = Divisor::new(d);
+            for k in 0..20_000u32 {
+                x = x.wrapping_mul(747_796_405).wrapping_add(2_891_336_453);
+                for n in [
+                    x,
+                    k,
+                    u32::MAX - k,
+                    d.wrapping_mul(k),
+                    d.wrapping_mul(k).wrapping_sub(1),
+                ] {
+                    assert_eq!(div.div_rem::<u32>(n), (n / d, n % d), "{n} / {d}");
+                }
+            }
+        }
+    }
 }

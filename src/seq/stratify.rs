@@ -3,8 +3,8 @@
 //!
 //! Three pieces carry them all:
 //!
-//! - [`Divisor`] splits an index into (round, position) and a cell into (row, column) with a
-//!   multiply instead of a division, because packets have no integer divide;
+//! - [`U32Lane::div_rem`] splits an index into (round, position) and a cell into (row, column)
+//!   (packets divide by a multiply, as they have no integer divide);
 //! - [`permute`] is a keyed bijection of [0, n) (a hash on ⌈log₂ n⌉ bits, cycle-walked into
 //!   range), which orders strata and shuffles sub-strata;
 //! - [`in_stratum`] puts a hashed jitter inside stratum `s` of `n` so that the f32 result lies in
@@ -28,43 +28,6 @@ const TAG_ROWS: u32 = 5;
 #[inline(always)]
 fn ceil_log2(n: u32) -> u32 {
     32 - (n - 1).leading_zeros()
-}
-
-/// Unsigned division of a lane by a scalar d ≥ 1 through a precomputed multiplier (Granlund and
-/// Montgomery, "Division by invariant integers using multiplication", PLDI 1994, §4): with
-/// l = ⌈log₂ d⌉ and m = ⌊2³²(2ˡ − d)/d⌋ + 1, q = (t + ((n − t) >> 1)) >> (l − 1), t = mulhi(m, n),
-/// is ⌊n/d⌋ for every 32-bit n (d = 1 uses shifts 0 and 0).
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Divisor {
-    d: u32,
-    m: u32,
-    shift1: u32,
-    shift2: u32,
-}
-
-impl Divisor {
-    /// The divisor `d`, which must be ≥ 1.
-    #[inline(always)]
-    pub(crate) fn new(d: u32) -> Self {
-        let l = ceil_log2(d);
-        let m = ((((1u64 << l) - d as u64) << 32) / d as u64 + 1) as u32;
-        Self {
-            d,
-            m,
-            shift1: l.min(1),
-            shift2: l.saturating_sub(1),
-        }
-    }
-
-    /// (⌊n/d⌋, n mod d), lane-wise.
-    #[inline(always)]
-    pub(crate) fn div_rem<U: U32Lane>(self, n: U) -> (U, U) {
-        let t = n.mul_hi(U::splat(self.m));
-        let q = t
-            .wrapping_add(n.wrapping_sub(t).shr(self.shift1))
-            .shr(self.shift2);
-        (q, n.wrapping_sub(q.wrapping_mul(U::splat(self.d))))
-    }
 }
 
 /// A keyed bijection of [0, n) for 1 ≤ n ≤ 2³¹, applied to `i < n`; each lane has its own key.
@@ -129,7 +92,7 @@ pub(crate) fn in_stratum<U: U32Lane>(s: U, n: u32, h: U) -> U::F {
 /// stratified set, with its own order.
 #[inline(always)]
 fn round<U: U32Lane>(index: U, n: u32, dim: u32, seed: u32) -> (U, U) {
-    let (r, j) = Divisor::new(n).div_rem(index);
+    let (r, j) = index.div_rem(n);
     (j, hash_keyed(r, tagged_keys(dim, seed, TAG_ORDER)))
 }
 
@@ -160,7 +123,7 @@ fn grid(nx: u32, ny: u32) -> (u32, u32) {
 fn cell<U: U32Lane>(index: U, nx: u32, ny: u32, dim: u32, seed: u32) -> (U, U, U, u32, u32) {
     let (nx, ny) = grid(nx, ny);
     let (j, key) = round(index, nx * ny, dim, seed);
-    let (row, column) = Divisor::new(nx).div_rem(permute(j, nx * ny, key));
+    let (row, column) = permute(j, nx * ny, key).div_rem(nx);
     (column, row, key, nx, ny)
 }
 
@@ -239,39 +202,6 @@ pub(crate) fn multi_jittered_2d<U: U32Lane>(
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn divisor_matches_division() {
-        let ds = [
-            1u32,
-            2,
-            3,
-            5,
-            7,
-            10,
-            641,
-            1000,
-            1 << 23,
-            (1 << 31) + 1,
-            u32::MAX,
-        ];
-        let mut x = 0x1234_5678u32;
-        for &d in &ds {
-            let div = Divisor::new(d);
-            for k in 0..20_000u32 {
-                x = x.wrapping_mul(747_796_405).wrapping_add(2_891_336_453);
-                for n in [
-                    x,
-                    k,
-                    u32::MAX - k,
-                    d.wrapping_mul(k),
-                    d.wrapping_mul(k).wrapping_sub(1),
-                ] {
-                    assert_eq!(div.div_rem(n), (n / d, n % d), "{n} / {d}");
-                }
-            }
-        }
-    }
 
     #[test]
     fn permute_is_a_bijection() {

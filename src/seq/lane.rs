@@ -4,10 +4,8 @@ use wide::{bytemuck, i32x8};
 
 use crate::x8::{F32x8, U32x8};
 
-/// 2⁻²⁴ as f32 bits: the weight of bit 8 of a 32-bit value in a 24-bit float in [0, 1).
-const TWO_POW_M24_BITS: u32 = 0x3380_0000;
-/// 1.0f32 as bits.
-const ONE_BITS: u32 = 0x3f80_0000;
+/// 2⁻²⁴: the weight of bit 8 of a 32-bit value in a 24-bit float in [0, 1).
+const TWO_POW_M24: f32 = 1.0 / 16_777_216.0;
 
 /// A lane of 32-bit unsigned integers: the operations the sequence generators use, with
 /// wrapping arithmetic in both widths.
@@ -37,6 +35,9 @@ pub trait U32Lane: Copy {
     /// (⌊self/d⌋, self mod d), lane-wise, for d ≥ 1: the hardware divide in scalar code, a
     /// multiply by a precomputed reciprocal in packets (exact in both, so the results agree).
     fn div_rem(self, d: u32) -> (Self, Self);
+    /// A constant from a table of the constant repeated 8 times: a packet loads it whole (one
+    /// memory operand), where splatting a scalar would take a load and a broadcast.
+    fn splat_from(repeated: &[u32; 8]) -> Self;
     /// The high word of the 64-bit product `a · b`.
     fn mul_hi(self, b: Self) -> Self;
     /// All ones where `self > b` (unsigned), zero elsewhere.
@@ -56,9 +57,8 @@ pub trait U32Lane: Copy {
     fn ratio(self, den: u32) -> Self::F;
     /// `(self >> 8) · 2⁻²⁴`: a 24-bit float in [0, 1), never 1.0.
     ///
-    /// Computed exactly, without an int-to-float conversion instruction: the top 23 bits go into
-    /// the mantissa of a float in [1, 2), 1 is subtracted (exact), and bit 8 is added as 0 or
-    /// 2⁻²⁴ (exact, as the sum has 24 significant bits).
+    /// Exact in both widths: `self >> 8` is below 2²⁴, so its conversion to f32 (through i32,
+    /// one instruction for a packet) is exact, and so is the scaling by a power of two.
     fn to_unit_f32(self) -> Self::F;
 }
 
@@ -101,6 +101,10 @@ impl U32Lane for u32 {
         (self / d, self % d)
     }
     #[inline(always)]
+    fn splat_from(repeated: &[u32; 8]) -> Self {
+        repeated[0]
+    }
+    #[inline(always)]
     fn mul_hi(self, b: Self) -> Self {
         ((self as u64 * b as u64) >> 32) as u32
     }
@@ -135,7 +139,7 @@ impl U32Lane for u32 {
     }
     #[inline(always)]
     fn to_unit_f32(self) -> f32 {
-        unit_f32(self)
+        ((self >> 8) as i32) as f32 * TWO_POW_M24
     }
 }
 
@@ -178,6 +182,10 @@ impl U32Lane for U32x8 {
         Divisor::new(d).div_rem(self)
     }
     #[inline(always)]
+    fn splat_from(repeated: &[u32; 8]) -> Self {
+        U32x8::new(*repeated)
+    }
+    #[inline(always)]
     fn mul_hi(self, b: Self) -> Self {
         self.mul_keep_high(b)
     }
@@ -211,26 +219,8 @@ impl U32Lane for U32x8 {
     }
     #[inline(always)]
     fn to_unit_f32(self) -> F32x8 {
-        unit_f32(self)
+        F32x8::from_i32x8(bytemuck::cast::<U32x8, i32x8>(self >> 8)) * F32x8::splat(TWO_POW_M24)
     }
-}
-
-/// The shared body of [`U32Lane::to_unit_f32`], so both widths run the same operations.
-#[inline(always)]
-fn unit_f32<U>(x: U) -> U::F
-where
-    U: U32Lane,
-    U::F: core::ops::Sub<Output = U::F> + core::ops::Add<Output = U::F>,
-{
-    // x >> 9 fills only the 23 mantissa bits, so the xor sets 1.0's exponent above them.
-    let hi =
-        x.shr(9).xor(U::splat(ONE_BITS)).float_from_bits() - U::splat(ONE_BITS).float_from_bits();
-    let lo = x
-        .shr(8)
-        .and(U::splat(1))
-        .wrapping_mul(U::splat(TWO_POW_M24_BITS))
-        .float_from_bits();
-    hi + lo
 }
 
 /// Bit reversal of each lane with AVX2: one byte shuffle reverses the bytes of each lane, and two

@@ -79,6 +79,22 @@ const MATRICES: [[u32; 32]; 3] = {
     out
 };
 
+/// [`MATRICES`] for dimensions 2 and 3 (the ones that loop), each column repeated 8 times so a
+/// packet reads it as one memory operand.
+static COLUMNS: [[[u32; 8]; 32]; 2] = {
+    let mut out = [[[0u32; 8]; 32]; 2];
+    let mut d = 0;
+    while d < 2 {
+        let mut p = 0;
+        while p < 32 {
+            out[d][p] = [MATRICES[d + 1][p]; 8];
+            p += 1;
+        }
+        d += 1;
+    }
+    out
+};
+
 /// Burley's hash in reversed-bit order: a nested uniform scramble of the bit-reversed value.
 #[inline(always)]
 fn scramble_reversed<U: U32Lane>(x: U, seed: u32) -> U {
@@ -129,11 +145,11 @@ pub(crate) fn sobol_bits<U: U32Lane>(index: U, dim: u32, seed: u32) -> U {
         0 => reversed_index.reverse_bits(),
         1 => pascal(reversed_index.reverse_bits()),
         d => {
-            let columns = &MATRICES[d as usize - 1];
+            let columns = &COLUMNS[d as usize - 2];
             let mut bits = reversed_index;
             let mut value = U::splat(0);
-            for &column in columns {
-                value = value.xor(bits.top_bit_mask().and(U::splat(column)));
+            for column in columns {
+                value = value.xor(bits.top_bit_mask().and(U::splat_from(column)));
                 bits = bits.shl(1);
             }
             value

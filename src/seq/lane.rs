@@ -50,8 +50,6 @@ pub trait U32Lane: Copy {
     fn any_nonzero(self) -> bool;
     /// The bits in reverse order, lane-wise.
     fn reverse_bits(self) -> Self;
-    /// The float with these bits.
-    fn float_from_bits(self) -> Self::F;
     /// `self / den` as the correctly rounded f32 quotient, for `self, den < 2²⁴`, where both
     /// convert to f32 exactly (larger values are rounded to nearest before dividing).
     fn ratio(self, den: u32) -> Self::F;
@@ -129,10 +127,6 @@ impl U32Lane for u32 {
         u32::reverse_bits(self)
     }
     #[inline(always)]
-    fn float_from_bits(self) -> f32 {
-        f32::from_bits(self)
-    }
-    #[inline(always)]
     fn ratio(self, den: u32) -> f32 {
         // Through i32, like the packet's conversion instruction: exact below 2²⁴.
         (self as i32) as f32 / (den as i32) as f32
@@ -208,10 +202,6 @@ impl U32Lane for U32x8 {
     #[inline(always)]
     fn reverse_bits(self) -> Self {
         reverse_bits_x8(self)
-    }
-    #[inline(always)]
-    fn float_from_bits(self) -> F32x8 {
-        F32x8::from_bits(self)
     }
     #[inline(always)]
     fn ratio(self, den: u32) -> F32x8 {

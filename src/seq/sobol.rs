@@ -60,34 +60,20 @@ const fn direction_numbers(s: u32, a: u32, init: [u32; 3]) -> [u32; 32] {
     v
 }
 
-/// The generator matrices of dimensions 1–3 in the form the hot loop wants: entry p is the
-/// bit-reversed direction number v_{p+1}, the contribution of index bit p, which the loop reads
-/// as bit 31 − p of the bit-reversed index, walking it from the top.
-const MATRICES: [[u32; 32]; 3] = {
-    let mut out = [[0u32; 32]; 3];
-    let mut d = 0;
-    while d < 3 {
-        let (s, a, init) = JOE_KUO[d];
-        let v = direction_numbers(s, a, init);
-        let mut p = 0;
-        while p < 32 {
-            out[d][p] = v[p].reverse_bits();
-            p += 1;
-        }
-        d += 1;
-    }
-    out
-};
-
-/// [`MATRICES`] for dimensions 2 and 3 (the ones that loop), each column repeated 8 times so a
-/// packet reads it as one memory operand.
+/// The generator matrices of dimensions 2 and 3 (Joe–Kuo's 3 and 4) in the form the hot loop
+/// wants: column p is the bit-reversed direction number v_{p+1}, the contribution of index bit p,
+/// which the loop reads as bit 31 − p of the bit-reversed index, walking it from the top. Each
+/// column is repeated 8 times so that a packet reads it as one memory operand. Dimension 1 needs
+/// no table (see [`pascal`]).
 static COLUMNS: [[[u32; 8]; 32]; 2] = {
     let mut out = [[[0u32; 8]; 32]; 2];
     let mut d = 0;
     while d < 2 {
+        let (s, a, init) = JOE_KUO[d + 1];
+        let v = direction_numbers(s, a, init);
         let mut p = 0;
         while p < 32 {
-            out[d][p] = [MATRICES[d + 1][p]; 8];
+            out[d][p] = [v[p].reverse_bits(); 8];
             p += 1;
         }
         d += 1;
@@ -161,6 +147,22 @@ pub(crate) fn sobol_bits<U: U32Lane>(index: U, dim: u32, seed: u32) -> U {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The five-step Pascal form of dimension 1 is the GF(2) product with Joe–Kuo dimension 2's
+    /// direction numbers, on the reversed-value convention of the pipeline.
+    #[test]
+    fn pascal_is_the_matrix_product() {
+        let (s, a, init) = JOE_KUO[0];
+        let v = direction_numbers(s, a, init);
+        let mut x = 0x2545_f491u32;
+        for _ in 0..100_000 {
+            x = x.wrapping_mul(747_796_405).wrapping_add(2_891_336_453);
+            let product = (0..32)
+                .filter(|b| (x >> b) & 1 == 1)
+                .fold(0, |acc, b| acc ^ v[b]);
+            assert_eq!(pascal(x), product.reverse_bits(), "index {x:#x}");
+        }
+    }
 
     /// The direction integers mₖ, k = 1..8, of Joe–Kuo dimensions 2–4, worked by hand from the
     /// published (s, a, m) and the paper's recurrence (the first two rows are also the classic

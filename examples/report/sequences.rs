@@ -61,6 +61,32 @@ fn lanes(k: usize) -> U32x8 {
     U32x8::new([b, b + 1, b + 2, b + 3, b + 4, b + 5, b + 6, b + 7])
 }
 
+/// A generator on a grid, from its scalar and packet forms: the quality columns use an nx × ny = N
+/// grid, the timings a 64 × 32 grid, two values per index.
+macro_rules! grid_generator {
+    ($name:literal, $scalar:path, $packet:path) => {
+        Generator {
+            name: $name,
+            points: |i, n, s| {
+                let (nx, ny) = grid(n);
+                $scalar(i, nx, ny, 0, s)
+            },
+            scalar: |out, opaque| {
+                for (i, o) in out.chunks_exact_mut(2).enumerate() {
+                    let p = $scalar(index(i, opaque), 64, 32, 0, SEED);
+                    (o[0], o[1]) = (p.x, p.y);
+                }
+            },
+            packet: |out| {
+                for (k, o) in out.chunks_exact_mut(2).enumerate() {
+                    let p = $packet(lanes(k), 64, 32, 0, SEED);
+                    (o[0], o[1]) = (p.x, p.y);
+                }
+            },
+        }
+    };
+}
+
 /// 1D generators write one value per index; 2D ones two values per index (x then y).
 fn generators() -> Vec<Generator> {
     vec![
@@ -114,66 +140,13 @@ fn generators() -> Vec<Generator> {
                 }
             },
         },
-        Generator {
-            name: "jittered_2d",
-            points: |i, n, s| {
-                let (nx, ny) = grid(n);
-                seq::jittered_2d(i, nx, ny, 0, s)
-            },
-            scalar: |out, opaque| {
-                for (i, o) in out.chunks_exact_mut(2).enumerate() {
-                    let i = index(i, opaque);
-                    let p = seq::jittered_2d(i, 64, 32, 0, SEED);
-                    (o[0], o[1]) = (p.x, p.y);
-                }
-            },
-            packet: |out| {
-                for (k, o) in out.chunks_exact_mut(2).enumerate() {
-                    let p = seq::x8::jittered_2d(lanes(k), 64, 32, 0, SEED);
-                    (o[0], o[1]) = (p.x, p.y);
-                }
-            },
-        },
-        Generator {
-            name: "multi_jittered_2d",
-            points: |i, n, s| {
-                let (nx, ny) = grid(n);
-                seq::multi_jittered_2d(i, nx, ny, 0, s)
-            },
-            scalar: |out, opaque| {
-                for (i, o) in out.chunks_exact_mut(2).enumerate() {
-                    let i = index(i, opaque);
-                    let p = seq::multi_jittered_2d(i, 64, 32, 0, SEED);
-                    (o[0], o[1]) = (p.x, p.y);
-                }
-            },
-            packet: |out| {
-                for (k, o) in out.chunks_exact_mut(2).enumerate() {
-                    let p = seq::x8::multi_jittered_2d(lanes(k), 64, 32, 0, SEED);
-                    (o[0], o[1]) = (p.x, p.y);
-                }
-            },
-        },
-        Generator {
-            name: "cmj_2d",
-            points: |i, n, s| {
-                let (nx, ny) = grid(n);
-                seq::cmj_2d(i, nx, ny, 0, s)
-            },
-            scalar: |out, opaque| {
-                for (i, o) in out.chunks_exact_mut(2).enumerate() {
-                    let i = index(i, opaque);
-                    let p = seq::cmj_2d(i, 64, 32, 0, SEED);
-                    (o[0], o[1]) = (p.x, p.y);
-                }
-            },
-            packet: |out| {
-                for (k, o) in out.chunks_exact_mut(2).enumerate() {
-                    let p = seq::x8::cmj_2d(lanes(k), 64, 32, 0, SEED);
-                    (o[0], o[1]) = (p.x, p.y);
-                }
-            },
-        },
+        grid_generator!("jittered_2d", seq::jittered_2d, seq::x8::jittered_2d),
+        grid_generator!(
+            "multi_jittered_2d",
+            seq::multi_jittered_2d,
+            seq::x8::multi_jittered_2d
+        ),
+        grid_generator!("cmj_2d", seq::cmj_2d, seq::x8::cmj_2d),
         Generator {
             // Dimensions 0–3 in turn, as a 4D consumer reads them: 0 and 1 skip the matrix loop.
             name: "sobol (dims 0-3)",

@@ -103,11 +103,7 @@ pub(crate) fn stratified<U: U32Lane>(index: U, count: u32, dim: u32, seed: u32) 
     let n = count.clamp(1, MAX_STRATA);
     let (j, key) = round(index, n, dim, seed);
     let s = permute(j, n, key);
-    in_stratum(
-        s,
-        n,
-        hash_keyed(index, tagged_keys(dim, seed, TAG_JITTER_X)),
-    )
+    in_stratum(s, n, jitter(index, dim, seed, TAG_JITTER_X))
 }
 
 /// The grid of a 2D generator: nx in [1, 2²³], ny in [1, 2²³/nx], so the nx·ny cells (and the
@@ -127,6 +123,27 @@ fn cell<U: U32Lane>(index: U, nx: u32, ny: u32, dim: u32, seed: u32) -> (U, U, U
     (column, row, key, nx, ny)
 }
 
+/// The jitter of `index` in the stream `tag` of (dim, seed).
+#[inline(always)]
+fn jitter<U: U32Lane>(index: U, dim: u32, seed: u32, tag: u32) -> U {
+    hash_keyed(index, tagged_keys(dim, seed, tag))
+}
+
+/// A point with x in stratum `sx` of `nx` and y in stratum `sy` of `ny`, each jittered by its own
+/// stream: the last step of every 2D generator.
+#[inline(always)]
+fn place<U: U32Lane>(
+    index: U,
+    (sx, nx): (U, u32),
+    (sy, ny): (U, u32),
+    dim: u32,
+    seed: u32,
+) -> (U::F, U::F) {
+    let x = in_stratum(sx, nx, jitter(index, dim, seed, TAG_JITTER_X));
+    let y = in_stratum(sy, ny, jitter(index, dim, seed, TAG_JITTER_Y));
+    (x, y)
+}
+
 /// Generic body of [`jittered_2d`](super::jittered_2d).
 #[inline(always)]
 pub(crate) fn jittered_2d<U: U32Lane>(
@@ -137,17 +154,7 @@ pub(crate) fn jittered_2d<U: U32Lane>(
     seed: u32,
 ) -> (U::F, U::F) {
     let (column, row, _, nx, ny) = cell(index, nx, ny, dim, seed);
-    let x = in_stratum(
-        column,
-        nx,
-        hash_keyed(index, tagged_keys(dim, seed, TAG_JITTER_X)),
-    );
-    let y = in_stratum(
-        row,
-        ny,
-        hash_keyed(index, tagged_keys(dim, seed, TAG_JITTER_Y)),
-    );
-    (x, y)
+    place(index, (column, nx), (row, ny), dim, seed)
 }
 
 /// Generic body of [`multi_jittered_2d`](super::multi_jittered_2d) (`correlated = false`) and
@@ -186,17 +193,7 @@ pub(crate) fn multi_jittered_2d<U: U32Lane>(
     let n = nx * ny;
     let x_stratum = column.wrapping_mul(U::splat(ny)).wrapping_add(pi);
     let y_stratum = row.wrapping_mul(U::splat(nx)).wrapping_add(rho);
-    let x = in_stratum(
-        x_stratum,
-        n,
-        hash_keyed(index, tagged_keys(dim, seed, TAG_JITTER_X)),
-    );
-    let y = in_stratum(
-        y_stratum,
-        n,
-        hash_keyed(index, tagged_keys(dim, seed, TAG_JITTER_Y)),
-    );
-    (x, y)
+    place(index, (x_stratum, n), (y_stratum, n), dim, seed)
 }
 
 #[cfg(test)]

@@ -548,6 +548,9 @@ fn sobol_dimension_sets_are_decorrelated() {
         cov.abs() < 4.0 / 12.0 / (n as f64).sqrt(),
         "covariance {cov}"
     );
+    // Control: without padding, dimension 4 would repeat dimension 0, and the bound rejects that.
+    let repeated = mean(&|i| (seq::sobol(i, 0, 5) as f64 - 0.5).powi(2));
+    assert!(repeated.abs() >= 4.0 / 12.0 / (n as f64).sqrt());
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -4,7 +4,7 @@
 
 use super::log::{LN2_HI, LN2_LO};
 use super::{MAGIC, MAGIC_BITS, horner};
-use crate::lane::{Lane, Lane32};
+use crate::lane::{Lane, Lane32, U32Lane};
 
 /// expm1 r = r + r²·Q(r) for |r| ≤ ln2/2 (plus a little). Minimax for relative error: 2^-26.1.
 const EXPM1_Q: [f32; 5] = [
@@ -42,7 +42,7 @@ fn expm1_poly<L: Lane>(r: L) -> L {
 /// 2^k from the bits of MAGIC + k (an integer-valued float) for k ∈ [−126, 127].
 #[inline(always)]
 fn pow2<L: Lane32>(tb: L::U) -> L {
-    L::from_bits(L::shl(tb - L::u(MAGIC_BITS - 127), 23))
+    L::from_bits((tb - L::U::splat(MAGIC_BITS - 127)).shl(23))
 }
 
 /// eˣ. Overflows to +∞ above 88.72283; results below 2^-126 are subnormal, correctly scaled
@@ -74,7 +74,7 @@ pub fn exp_m1<L: Lane32>(x: L) -> L {
     // eˣ − 1 = 2ⁿ(1 + r + small) − 1 = 2·((s·r + (s − ½)) + s·small) with s = 2^(n−1): s·r and
     // s − ½ (n ≤ 24) are exact, and so is their sum for n = 0 and n = 1, where the result is
     // smallest; n = 0 gives r + small rounded once; n = 128 still fits.
-    let s = pow2::<L>(tb - L::u(1));
+    let s = pow2::<L>(tb - L::U::splat(1));
     let y = s.mul_add(small, s.mul_add(r, s - L::c(0.5))) * L::c(2.0);
     // Tiny x (and ±0, and subnormals, which the halving above would round): x itself.
     L::select(x.abs().lt(L::c(TWO_M25 as f64)), x, y)

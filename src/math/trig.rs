@@ -4,7 +4,7 @@
 //! See [`crate::math`] for domains and measured errors.
 
 use super::{MAGIC, horner, round_small};
-use crate::lane::{Lane, Lane32};
+use crate::lane::{Lane, Lane32, U32Lane};
 
 // ---------------------------------------------------------------------------------------------
 // Kernel in radians, |r| ≤ π/4 (plus a few ulp): sin r = r + r³·S(r²), cos r = 1 + r²·C(r²).
@@ -96,7 +96,7 @@ const LIMIT: f32 = 4_194_304.0;
 /// Multiplies by ±1.0 built from a sign bit: `s` has only bit 31 possibly set.
 #[inline(always)]
 fn flip<L: Lane32>(x: L, s: L::U) -> L {
-    x * L::from_bits(s | L::u(0x3f80_0000))
+    x * L::from_bits(s | L::U::splat(0x3f80_0000))
 }
 
 /// sin x and cos x.
@@ -130,9 +130,9 @@ pub fn sin_cos<L: Lane32>(x: L) -> (L, L) {
 
     let tb = t.to_bits();
     // Quadrant j mod 4: odd swaps sin and cos; sin is negated for j ≡ 2, 3, cos for j ≡ 1, 2.
-    let odd = L::from_bits(L::shl(tb & L::u(1), 31) | L::u(0x3f80_0000)).lt(L::c(0.0));
-    let sin_sign = L::shl(tb & L::u(2), 30);
-    let cos_sign = L::shl(((tb & L::u(3)) + L::u(1)) & L::u(2), 30);
+    let odd = L::from_bits((tb & L::U::splat(1)).shl(31) | L::U::splat(0x3f80_0000)).lt(L::c(0.0));
+    let sin_sign = (tb & L::U::splat(2)).shl(30);
+    let cos_sign = (((tb & L::U::splat(3)) + L::U::splat(1)) & L::U::splat(2)).shl(30);
     let sn = flip(L::select(odd, c, s), sin_sign);
     let cs = flip(L::select(odd, s, c), cos_sign);
     // sin(±0) = ±0 (the reduction turns −0 into +0).

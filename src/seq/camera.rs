@@ -1,9 +1,9 @@
 //! Camera samples: the lecture's 5D pixel integral (film x, y; lens u, v; time t) from padded
 //! Owen-scrambled Sobol pairs, written once over the lanes.
 
-use super::U32Lane;
 use super::hash::{hash3, lowbias32};
 use super::sobol::sobol_bits;
+use crate::lane::U32Lane;
 use crate::lane::V2;
 use crate::math::Math;
 use crate::warp::generic::{concentric_disk, tent};

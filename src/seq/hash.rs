@@ -1,6 +1,6 @@
 //! The counter-based hash behind [`independent`](super::independent).
 
-use super::U32Lane;
+use crate::lane::U32Lane;
 
 /// The lowbias32 integer finaliser: `x ^= x >> 16; x *= 0x7feb352d; x ^= x >> 15;
 /// x *= 0x846ca68b; x ^= x >> 16`.

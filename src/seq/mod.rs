@@ -40,16 +40,15 @@
 
 mod camera;
 mod hash;
-mod lane;
 pub mod quality;
 mod sobol;
 mod stratify;
 
 use glam::Vec2;
 
+pub use crate::lane::U32Lane;
 pub use camera::PixelFilter;
 pub use hash::hash3;
-pub use lane::U32Lane;
 pub use stratify::MAX_STRATA;
 
 /// The `index`-th value of the independent uniform stream `(dim, seed)`: [`hash3`]`(index, dim,

@@ -21,8 +21,8 @@
 //! scramble: the matrix columns are stored bit-reversed and indexed from the top bit. Dimensions
 //! 0 and 1 (van der Corput and Pascal) need no matrix loop at all; 2 and 3 take 32 column steps.
 
-use super::U32Lane;
 use super::hash::lowbias32;
+use crate::lane::U32Lane;
 
 /// Joe–Kuo ("Constructing Sobol sequences with better two-dimensional projections", SIAM J. Sci.
 /// Comput. 30, 2008; file new-joe-kuo-6.21201) parameters of their dimensions 2, 3 and 4: degree

@@ -10,8 +10,8 @@
 //! - [`in_stratum`] puts a hashed jitter inside stratum `s` of `n` so that the f32 result lies in
 //!   [s/n, (s+1)/n) exactly, not just up to rounding.
 
-use super::U32Lane;
 use super::hash::{hash_keyed, tagged_keys};
+use crate::lane::U32Lane;
 
 /// The most strata one axis resolves: above 2²³, strata are narrower than the spacing of f32 near
 /// 1 (2⁻²⁴), so one point per stratum can no longer be represented. Larger counts are clamped.

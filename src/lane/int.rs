@@ -1,21 +1,34 @@
-//! The integer lane the generators are written over: `u32` and [`U32x8`].
+//! The 32-bit integer lane, `u32` and [`U32x8`]: the bits of the float lanes, and what the
+//! sequence generators are written over.
+
+use core::ops::{Add, BitAnd, BitOr, Sub};
 
 use wide::{bytemuck, i32x8};
 
-use crate::x8::{F32x8, U32x8};
+use super::float::{F32x8, Lane};
+
+/// Eight u32 lanes (`wide::u32x8`), the bits of an [`F32x8`]. Re-exported as
+/// [`crate::x8::U32x8`].
+pub type U32x8 = wide::u32x8;
 
 /// 2⁻²⁴: the weight of bit 8 of a 32-bit value in a 24-bit float in [0, 1).
 const TWO_POW_M24: f32 = 1.0 / 16_777_216.0;
 
-/// A lane of 32-bit unsigned integers: the operations the sequence generators use, with
-/// wrapping arithmetic in both widths.
+/// A lane of 32-bit unsigned integers: the bits of a float lane, and the operations the sequence
+/// generators use, with wrapping arithmetic in both widths.
+///
+/// The operators `+ − & |` are the plain ones (for `u32`, `+` and `−` are checked in debug
+/// builds): bit manipulation of floats uses them where no overflow can occur; the generators use
+/// the `wrapping_*` methods.
 ///
 /// Every operation is exact integer arithmetic, and [`to_unit_f32`](U32Lane::to_unit_f32) is
 /// exact too, so a generic generator gives the same bits in every lane of a packet as in the
 /// scalar form.
-pub trait U32Lane: Copy {
+pub trait U32Lane:
+    Copy + Add<Output = Self> + Sub<Output = Self> + BitAnd<Output = Self> + BitOr<Output = Self>
+{
     /// The float lane of the same width.
-    type F: Copy;
+    type F: Lane;
     /// Every lane equal to `x`.
     fn splat(x: u32) -> Self;
     /// Lane-wise `a + b` mod 2³².

@@ -1,0 +1,38 @@
+//! The lane abstraction: every algorithm in the crate is written once over [`Lane`] (and
+//! [`Math`](crate::math::Math), which adds the transcendental functions).
+//!
+//! Three instances exist:
+//!
+//! - `f32`: the scalar form that the glam-facing API uses;
+//! - [`F32x8`]: the 8-wide packet form;
+//! - `f64`: the reference instance. Its transcendental functions delegate to libm, so it measures
+//!   the error of the f32 polynomials rather than repeating it.
+//!
+//! The f32 and F32x8 instances are built so that lane *i* of a packet computation equals the scalar
+//! computation on lane *i*'s inputs, bit for bit:
+//!
+//! - `+ − × ÷` and `sqrt` are IEEE operations, correctly rounded in both widths;
+//! - [`Lane::mul_add`] is fused in both widths exactly when the build has FMA (the scalar form goes
+//!   through lane 0 of a `wide::f32x4`, which wide fuses under the same condition as `f32x8`);
+//! - `min`, `max` and `clamp` are written as compare-and-select, so NaN handling does not depend on
+//!   which min/max instruction a target has;
+//! - conversions between floats and integers use bit tricks on integer-valued floats, never a
+//!   platform conversion whose out-of-range behaviour differs between widths.
+
+//!
+//! # Files
+//!
+//! - `float`: [`Lane`] (arithmetic, compares to a [`Mask`], selects) and [`Lane32`] (the bits of
+//!   an f32 lane), for `f32`, [`F32x8`] and `f64`;
+//! - `int`: [`U32Lane`], the 32-bit integer lane of the same two widths (`u32`, [`U32x8`]) that
+//!   the float lanes' bits and the sequence generators use;
+//! - `vector`: [`V2`] and [`V3`], vectors whose components are lanes, and their conversions to
+//!   glam's types.
+
+mod float;
+mod int;
+mod vector;
+
+pub use float::{F32x8, Lane, Lane32, Mask};
+pub use int::{U32Lane, U32x8};
+pub use vector::{V2, V3};

@@ -1,0 +1,218 @@
+//! Vectors whose components are lanes, and their conversions to glam's types.
+
+use core::ops::{Add, Neg, Sub};
+
+use super::float::Lane;
+
+/// A 2D vector whose components are lanes: `V2<f32>` is one point, `V2<F32x8>` eight.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct V2<L> {
+    pub x: L,
+    pub y: L,
+}
+
+/// A 3D vector whose components are lanes, stored as structure-of-arrays.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct V3<L> {
+    pub x: L,
+    pub y: L,
+    pub z: L,
+}
+
+impl<L: Lane> V2<L> {
+    #[inline(always)]
+    pub fn new(x: L, y: L) -> Self {
+        Self { x, y }
+    }
+    #[inline(always)]
+    pub fn dot(self, o: Self) -> L {
+        self.x.mul_add(o.x, self.y * o.y)
+    }
+    #[inline(always)]
+    pub fn length_squared(self) -> L {
+        self.dot(self)
+    }
+    /// Lane-wise select of whole vectors.
+    #[inline(always)]
+    pub fn select(m: L::Mask, a: Self, b: Self) -> Self {
+        Self::new(L::select(m, a.x, b.x), L::select(m, a.y, b.y))
+    }
+    /// Every NaN component replaced by the canonical NaN ([`Lane::canon`]).
+    #[inline(always)]
+    pub fn canon(self) -> Self {
+        Self::new(self.x.canon(), self.y.canon())
+    }
+    /// True where any component is NaN.
+    #[inline(always)]
+    pub fn any_nan(self) -> L::Mask {
+        self.x.is_nan() | self.y.is_nan()
+    }
+    /// Every component the canonical NaN where `m` is set or the component is NaN: how a warp
+    /// makes NaN input give NaN in every coordinate, not just in those the NaN reached.
+    #[inline(always)]
+    pub fn nan_where(self, m: L::Mask) -> Self {
+        let nan = L::c(f64::NAN);
+        Self::new(
+            L::select(m | self.x.is_nan(), nan, self.x),
+            L::select(m | self.y.is_nan(), nan, self.y),
+        )
+    }
+}
+
+impl<L: Lane> V3<L> {
+    #[inline(always)]
+    pub fn new(x: L, y: L, z: L) -> Self {
+        Self { x, y, z }
+    }
+    /// The vector with every component equal to `v`.
+    #[inline(always)]
+    pub fn all(v: L) -> Self {
+        Self::new(v, v, v)
+    }
+    #[inline(always)]
+    pub fn dot(self, o: Self) -> L {
+        self.x.mul_add(o.x, self.y.mul_add(o.y, self.z * o.z))
+    }
+    #[inline(always)]
+    pub fn cross(self, o: Self) -> Self {
+        Self::new(
+            self.y.mul_add(o.z, -(self.z * o.y)),
+            self.z.mul_add(o.x, -(self.x * o.z)),
+            self.x.mul_add(o.y, -(self.y * o.x)),
+        )
+    }
+    #[inline(always)]
+    pub fn length_squared(self) -> L {
+        self.dot(self)
+    }
+    #[inline(always)]
+    pub fn length(self) -> L {
+        self.dot(self).sqrt()
+    }
+    /// `self / |self|` by true division (no approximate reciprocal). The zero vector gives NaN
+    /// components; callers guard it.
+    #[inline(always)]
+    pub fn normalize(self) -> Self {
+        let len = self.length();
+        Self::new(self.x / len, self.y / len, self.z / len)
+    }
+    #[inline(always)]
+    pub fn scale(self, s: L) -> Self {
+        Self::new(self.x * s, self.y * s, self.z * s)
+    }
+    /// Lane-wise select of whole vectors.
+    #[inline(always)]
+    pub fn select(m: L::Mask, a: Self, b: Self) -> Self {
+        Self::new(
+            L::select(m, a.x, b.x),
+            L::select(m, a.y, b.y),
+            L::select(m, a.z, b.z),
+        )
+    }
+    /// Every NaN component replaced by the canonical NaN ([`Lane::canon`]).
+    #[inline(always)]
+    pub fn canon(self) -> Self {
+        Self::new(self.x.canon(), self.y.canon(), self.z.canon())
+    }
+    /// True where any component is NaN.
+    #[inline(always)]
+    pub fn any_nan(self) -> L::Mask {
+        self.x.is_nan() | self.y.is_nan() | self.z.is_nan()
+    }
+    /// Every component the canonical NaN where `m` is set or the component is NaN (see
+    /// [`V2::nan_where`]).
+    #[inline(always)]
+    pub fn nan_where(self, m: L::Mask) -> Self {
+        let nan = L::c(f64::NAN);
+        Self::new(
+            L::select(m | self.x.is_nan(), nan, self.x),
+            L::select(m | self.y.is_nan(), nan, self.y),
+            L::select(m | self.z.is_nan(), nan, self.z),
+        )
+    }
+}
+
+impl<L: Lane> Add for V3<L> {
+    type Output = Self;
+    #[inline(always)]
+    fn add(self, o: Self) -> Self {
+        Self::new(self.x + o.x, self.y + o.y, self.z + o.z)
+    }
+}
+impl<L: Lane> Sub for V3<L> {
+    type Output = Self;
+    #[inline(always)]
+    fn sub(self, o: Self) -> Self {
+        Self::new(self.x - o.x, self.y - o.y, self.z - o.z)
+    }
+}
+impl<L: Lane> Neg for V3<L> {
+    type Output = Self;
+    #[inline(always)]
+    fn neg(self) -> Self {
+        Self::new(-self.x, -self.y, -self.z)
+    }
+}
+impl<L: Lane> Add for V2<L> {
+    type Output = Self;
+    #[inline(always)]
+    fn add(self, o: Self) -> Self {
+        Self::new(self.x + o.x, self.y + o.y)
+    }
+}
+impl<L: Lane> Sub for V2<L> {
+    type Output = Self;
+    #[inline(always)]
+    fn sub(self, o: Self) -> Self {
+        Self::new(self.x - o.x, self.y - o.y)
+    }
+}
+
+impl From<glam::Vec2> for V2<f32> {
+    #[inline(always)]
+    fn from(v: glam::Vec2) -> Self {
+        Self::new(v.x, v.y)
+    }
+}
+impl From<V2<f32>> for glam::Vec2 {
+    #[inline(always)]
+    fn from(v: V2<f32>) -> Self {
+        glam::Vec2::new(v.x, v.y)
+    }
+}
+impl From<glam::Vec3> for V3<f32> {
+    #[inline(always)]
+    fn from(v: glam::Vec3) -> Self {
+        Self::new(v.x, v.y, v.z)
+    }
+}
+impl From<V3<f32>> for glam::Vec3 {
+    #[inline(always)]
+    fn from(v: V3<f32>) -> Self {
+        glam::Vec3::new(v.x, v.y, v.z)
+    }
+}
+impl From<glam::DVec2> for V2<f64> {
+    #[inline(always)]
+    fn from(v: glam::DVec2) -> Self {
+        Self::new(v.x, v.y)
+    }
+}
+impl From<V2<f64>> for glam::DVec2 {
+    #[inline(always)]
+    fn from(v: V2<f64>) -> Self {
+        glam::DVec2::new(v.x, v.y)
+    }
+}
+impl From<glam::DVec3> for V3<f64> {
+    #[inline(always)]
+    fn from(v: glam::DVec3) -> Self {
+        Self::new(v.x, v.y, v.z)
+    }
+}
+impl From<V3<f64>> for glam::DVec3 {
+    #[inline(always)]
+    fn from(v: V3<f64>) -> Self {
+        glam::DVec3::new(v.x, v.y, v.z)
+    }
+}

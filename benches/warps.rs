@@ -50,22 +50,22 @@ macro_rules! for_each_warp {
         let n8 = F32x8::splat(n);
         $m!(
             "concentric_disk",
-            |u| {
+            |u: Vec2| {
                 let p = warp::concentric_disk(u);
                 Vec3::new(p.x, p.y, 0.0)
             },
-            |u| {
+            |u: Vec2x8| {
                 let p = warp::x8::concentric_disk(u);
                 Vec3x8::new(p.x, p.y, F32x8::ZERO)
             }
         );
         $m!(
             "polar_disk",
-            |u| {
+            |u: Vec2| {
                 let p = warp::polar_disk(u);
                 Vec3::new(p.x, p.y, 0.0)
             },
-            |u| {
+            |u: Vec2x8| {
                 let p = warp::x8::polar_disk(u);
                 Vec3x8::new(p.x, p.y, F32x8::ZERO)
             }

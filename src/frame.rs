@@ -6,99 +6,80 @@
 //! 1 in magnitude, it stays orthonormal to about 6e-8 even at n_z = −0.9999999, where Frisvad's
 //! original form is off by 0.54. The frame is right-handed: t × b' = n.
 //!
+//! One [`Frame`] type serves every width: `Frame<Vec3>` (the default), `Frame<Vec3x8>` (eight
+//! frames, also named [`x8::Frame`]) and `Frame<DVec3>`, as the type of the normal picks.
+//!
 //! Bad input: `n` is used as given (not normalised). A zero normal gives the frame of +z with
-//! n = 0; NaN components give NaN axes.
+//! n = 0; NaN components give NaN axes (canonical NaN, the same bits in every width).
 
 use glam::Vec3;
 
-use crate::lane::{Lane, V3};
-use crate::x8::Vec3x8;
+use crate::lane::V3;
+use crate::math::Math;
+use crate::point::Point3;
 
-/// The two tangents of the Duff et al. basis for unit normal `n`.
-#[inline(always)]
-pub(crate) fn basis<L: Lane>(n: V3<L>) -> (V3<L>, V3<L>) {
-    let s = L::c(1.0).copysign(n.z);
-    let a = L::c(-1.0) / (s + n.z);
-    let b = n.x * n.y * a;
-    let t = V3::new((s * n.x * n.x).mul_add(a, L::c(1.0)), s * b, -(s * n.x));
-    let bt = V3::new(b, (n.y * n.y).mul_add(a, s), -n.y);
-    (t.canon(), bt.canon())
-}
-
-#[inline(always)]
-fn to_local<L: Lane>(t: V3<L>, b: V3<L>, n: V3<L>, v: V3<L>) -> V3<L> {
-    V3::new(v.dot(t), v.dot(b), v.dot(n)).canon()
-}
-
-#[inline(always)]
-fn to_world<L: Lane>(t: V3<L>, b: V3<L>, n: V3<L>, v: V3<L>) -> V3<L> {
-    V3::new(
-        t.x.mul_add(v.x, b.x.mul_add(v.y, n.x * v.z)),
-        t.y.mul_add(v.x, b.y.mul_add(v.y, n.y * v.z)),
-        t.z.mul_add(v.x, b.z.mul_add(v.y, n.z * v.z)),
-    )
-    .canon()
-}
-
-/// A right-handed orthonormal frame (`t`, `b`, `n`): local +z is `n`.
+/// A right-handed orthonormal frame (`t`, `b`, `n`): local +z is `n`. `V` is the width:
+/// [`glam::Vec3`] by default, [`Vec3x8`](crate::x8::Vec3x8) for eight frames, [`glam::DVec3`].
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Frame {
-    pub t: Vec3,
-    pub b: Vec3,
-    pub n: Vec3,
+pub struct Frame<V = Vec3> {
+    /// The first tangent.
+    pub t: V,
+    /// The second tangent, n × t.
+    pub b: V,
+    /// The normal: local +z.
+    pub n: V,
 }
 
-impl Frame {
+impl<V: Point3<Lane = L>, L: Math> Frame<V> {
     /// The frame around unit normal `n` (Duff et al.).
     #[inline]
-    pub fn from_normal(n: Vec3) -> Self {
-        let (t, b) = basis::<f32>(n.into());
+    pub fn from_normal(n: V) -> Self {
+        let n = n.to_lanes();
+        let s = L::c(1.0).copysign(n.z);
+        let a = L::c(-1.0) / (s + n.z);
+        let b = n.x * n.y * a;
+        let t = V3::new((s * n.x * n.x).mul_add(a, L::c(1.0)), s * b, -(s * n.x));
+        let bt = V3::new(b, (n.y * n.y).mul_add(a, s), -n.y);
         Self {
-            t: t.into(),
-            b: b.into(),
-            n,
+            t: V::from_lanes(t.canon()),
+            b: V::from_lanes(bt.canon()),
+            n: V::from_lanes(n.canon()),
         }
     }
+
     /// World → local: (v·t, v·b, v·n).
     #[inline]
-    pub fn to_local(&self, v: Vec3) -> Vec3 {
-        to_local::<f32>(self.t.into(), self.b.into(), self.n.into(), v.into()).into()
+    pub fn to_local(&self, v: V) -> V {
+        let (t, b, n, v) = self.lanes(v);
+        V::from_lanes(V3::new(v.dot(t), v.dot(b), v.dot(n)).canon())
     }
+
     /// Local → world: t·v_x + b·v_y + n·v_z.
     #[inline]
-    pub fn to_world(&self, v: Vec3) -> Vec3 {
-        to_world::<f32>(self.t.into(), self.b.into(), self.n.into(), v.into()).into()
+    pub fn to_world(&self, v: V) -> V {
+        let (t, b, n, v) = self.lanes(v);
+        let w = V3::new(
+            t.x.mul_add(v.x, b.x.mul_add(v.y, n.x * v.z)),
+            t.y.mul_add(v.x, b.y.mul_add(v.y, n.y * v.z)),
+            t.z.mul_add(v.x, b.z.mul_add(v.y, n.z * v.z)),
+        );
+        V::from_lanes(w.canon())
+    }
+
+    #[inline(always)]
+    fn lanes(&self, v: V) -> (V3<L>, V3<L>, V3<L>, V3<L>) {
+        (
+            self.t.to_lanes(),
+            self.b.to_lanes(),
+            self.n.to_lanes(),
+            v.to_lanes(),
+        )
     }
 }
 
-/// The packet twin of [`crate::frame::Frame`]: eight frames, one per lane.
+/// The packet path: [`x8::Frame`] is `Frame<Vec3x8>`, eight frames, one per lane.
 pub mod x8 {
-    use super::*;
-
-    /// Eight right-handed orthonormal frames.
-    #[derive(Clone, Copy, Debug, PartialEq)]
-    pub struct Frame {
-        pub t: Vec3x8,
-        pub b: Vec3x8,
-        pub n: Vec3x8,
-    }
-
-    impl Frame {
-        /// The frames around eight unit normals (Duff et al.).
-        #[inline]
-        pub fn from_normal(n: Vec3x8) -> Self {
-            let (t, b) = basis(n);
-            Self { t, b, n: n.canon() }
-        }
-        /// World → local, lane by lane.
-        #[inline]
-        pub fn to_local(&self, v: Vec3x8) -> Vec3x8 {
-            to_local(self.t, self.b, self.n, v)
-        }
-        /// Local → world, lane by lane.
-        #[inline]
-        pub fn to_world(&self, v: Vec3x8) -> Vec3x8 {
-            to_world(self.t, self.b, self.n, v)
-        }
-    }
+    /// Eight right-handed orthonormal frames: lane *i* is the frame of lane *i*'s normal, bit for
+    /// bit.
+    pub type Frame = super::Frame<crate::x8::Vec3x8>;
 }

@@ -51,6 +51,7 @@ extern crate std;
 pub mod frame;
 pub mod lane;
 pub mod math;
+pub mod point;
 pub mod rng;
 pub mod seq;
 pub mod warp;

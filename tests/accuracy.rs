@@ -121,17 +121,17 @@ fn constant_pdfs() {
     for (name, got, want) in [
         (
             "uniform_disk_pdf",
-            warp::uniform_disk_pdf(),
+            warp::uniform_disk_pdf(glam::Vec2::ZERO),
             1.0 / std::f64::consts::PI,
         ),
         (
             "uniform_hemisphere_pdf",
-            warp::uniform_hemisphere_pdf(),
+            warp::uniform_hemisphere_pdf(glam::Vec3::Z),
             UNIFORM_HEMISPHERE_PDF,
         ),
         (
             "uniform_sphere_pdf",
-            warp::uniform_sphere_pdf(),
+            warp::uniform_sphere_pdf(glam::Vec3::Z),
             UNIFORM_SPHERE_PDF,
         ),
     ] {
@@ -211,7 +211,7 @@ fn uniform_cone_matches_reference() {
         }
         out.push(m.check(POINT_TOL));
         let mut mp = Max::new(format!("uniform_cone_pdf {label}"));
-        let p = warp::uniform_cone_pdf(h);
+        let p = warp::uniform_cone_pdf(glam::Vec3::Z, h);
         mp.add(rel_err(p as f64, uniform_cone_pdf(h as f64)), || {
             format!("h={h} got {p}")
         });
@@ -221,7 +221,7 @@ fn uniform_cone_matches_reference() {
     let mut mp = Max::new("uniform_cone_pdf sweep h∈[1e-12,2]");
     for i in 0..=4000 {
         let h = (1e-12f64 * (2e12f64).powf(i as f64 / 4000.0)).min(2.0) as f32;
-        let p = warp::uniform_cone_pdf(h);
+        let p = warp::uniform_cone_pdf(glam::Vec3::Z, h);
         mp.add(rel_err(p as f64, uniform_cone_pdf(h as f64)), || {
             format!("h={h:e} got {p:e}")
         });

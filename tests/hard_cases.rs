@@ -389,8 +389,8 @@ fn funs() -> Vec<Fun> {
         },
         Fun {
             name: "uniform_cone_pdf(h)",
-            s: Box::new(|x| vec![warp::uniform_cone_pdf(x)]),
-            p: Box::new(|x| l1(warp::x8::uniform_cone_pdf(x))),
+            s: Box::new(|x| vec![warp::uniform_cone_pdf(Vec3::Z, x)]),
+            p: Box::new(|x| l1(warp::x8::uniform_cone_pdf(Vec3x8::splat(Vec3::Z), x))),
             at_nan: is_zero("uniform_cone_pdf"),
         },
         Fun {
@@ -849,7 +849,7 @@ fn cases() -> Vec<Case> {
         "4: uniform_cone h=1e-7: pdf 1.591549e6, samples spread over the cap",
         Box::new(|| {
             let h = 1e-7f32;
-            let pdf = warp::uniform_cone_pdf(h);
+            let pdf = warp::uniform_cone_pdf(Vec3::Z, h);
             let mut r = vec![check(rel_err(pdf as f64, 1.591549e6) <= 1e-6, || {
                 format!("pdf = {pdf}")
             })];
@@ -884,7 +884,7 @@ fn cases() -> Vec<Case> {
         Box::new(|| {
             let s2 = 1e-8f32;
             let h = warp::cone_h_from_sin2(s2);
-            let pdf = warp::uniform_cone_pdf(h);
+            let pdf = warp::uniform_cone_pdf(Vec3::Z, h);
             let mut r = vec![
                 check(rel_err(h as f64, 5e-9) <= 1e-6, || format!("h = {h:e}")),
                 check(
@@ -979,7 +979,7 @@ fn cases() -> Vec<Case> {
                 if p.z > 0.0 {
                     let pdf = warp::phong_lobe_pdf(p.z, 0.0);
                     r.push(check(
-                        rel_err(pdf as f64, warp::uniform_hemisphere_pdf() as f64) <= 1e-6,
+                        rel_err(pdf as f64, warp::uniform_hemisphere_pdf(Vec3::Z) as f64) <= 1e-6,
                         || format!("pdf n=0 at z={}: {pdf}", p.z),
                     ));
                 }
@@ -1219,18 +1219,18 @@ fn cases() -> Vec<Case> {
             for (name, s, p) in [
                 (
                     "uniform_disk_pdf",
-                    warp::uniform_disk_pdf(),
-                    warp::x8::uniform_disk_pdf(),
+                    warp::uniform_disk_pdf(Vec2::ZERO),
+                    warp::x8::uniform_disk_pdf(Vec2x8::splat(Vec2::ZERO)),
                 ),
                 (
                     "uniform_hemisphere_pdf",
-                    warp::uniform_hemisphere_pdf(),
-                    warp::x8::uniform_hemisphere_pdf(),
+                    warp::uniform_hemisphere_pdf(Vec3::Z),
+                    warp::x8::uniform_hemisphere_pdf(Vec3x8::splat(Vec3::Z)),
                 ),
                 (
                     "uniform_sphere_pdf",
-                    warp::uniform_sphere_pdf(),
-                    warp::x8::uniform_sphere_pdf(),
+                    warp::uniform_sphere_pdf(Vec3::Z),
+                    warp::x8::uniform_sphere_pdf(Vec3x8::splat(Vec3::Z)),
                 ),
             ] {
                 for lane in 0..8 {
@@ -1353,7 +1353,7 @@ fn cases() -> Vec<Case> {
         Box::new(|| {
             let mut r = vec![];
             for h in [0.0f32, -0.0, -1.0, f32::NEG_INFINITY] {
-                let pdf = warp::uniform_cone_pdf(h);
+                let pdf = warp::uniform_cone_pdf(Vec3::Z, h);
                 r.push(check(pdf == 0.0, || {
                     format!("uniform_cone_pdf({h}) = {pdf}")
                 }));
@@ -1366,8 +1366,13 @@ fn cases() -> Vec<Case> {
             }
             for h in [2.5f32, 1e30, f32::INFINITY] {
                 r.push(check(
-                    warp::uniform_cone_pdf(h) == warp::uniform_cone_pdf(2.0),
-                    || format!("uniform_cone_pdf({h}) = {}", warp::uniform_cone_pdf(h)),
+                    warp::uniform_cone_pdf(Vec3::Z, h) == warp::uniform_cone_pdf(Vec3::Z, 2.0),
+                    || {
+                        format!(
+                            "uniform_cone_pdf({h}) = {}",
+                            warp::uniform_cone_pdf(Vec3::Z, h)
+                        )
+                    },
                 ));
                 for u in grid(4) {
                     let u = Vec2::new(u[0], u[1]);

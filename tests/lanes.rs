@@ -5,7 +5,7 @@
 
 use glam::{Vec2, Vec3};
 use mcsample::frame::{self, Frame};
-use mcsample::verify::{Packet, check_lanes};
+use mcsample::verify::{Scalar, check_lanes};
 use mcsample::warp::{self, ONE_MINUS_EPS};
 use mcsample::x8::{F32x8, Vec2x8, Vec3x8};
 use rand_core::Rng;
@@ -111,12 +111,12 @@ impl Gen {
     }
 }
 
-fn run<I: Packet, O: Packet>(
+fn run<S: Scalar, T: Scalar>(
     failures: &mut Vec<String>,
     name: &str,
-    inputs: &[I::Scalar],
-    packet: impl FnMut(I) -> O,
-    scalar: impl FnMut(I::Scalar) -> O::Scalar,
+    inputs: &[S],
+    packet: impl FnMut(S::X8) -> T::X8,
+    scalar: impl FnMut(S) -> T,
 ) {
     match check_lanes(inputs, packet, scalar) {
         Ok(n) => assert!(n >= inputs.len()),
@@ -251,13 +251,6 @@ fn every_warp_matches_its_scalar_twin_bit_for_bit() {
         warp::x8::cone_h_from_sin2,
         warp::cone_h_from_sin2,
     );
-    run(
-        f,
-        "uniform_cone_pdf",
-        &hs,
-        warp::x8::uniform_cone_pdf,
-        warp::uniform_cone_pdf,
-    );
     let uh: Vec<(Vec2, f32)> = us.iter().copied().zip(hs.iter().copied()).collect();
     run(
         f,
@@ -273,6 +266,34 @@ fn every_warp_matches_its_scalar_twin_bit_for_bit() {
         &wh,
         |(w, h): (Vec3x8, F32x8)| warp::x8::uniform_cone_inverse(w, h),
         |(w, h): (Vec3, f32)| warp::uniform_cone_inverse(w, h),
+    );
+    run(
+        f,
+        "uniform_cone_pdf",
+        &wh,
+        |(w, h): (Vec3x8, F32x8)| warp::x8::uniform_cone_pdf(w, h),
+        |(w, h): (Vec3, f32)| warp::uniform_cone_pdf(w, h),
+    );
+    run(
+        f,
+        "uniform_disk_pdf",
+        &us,
+        warp::x8::uniform_disk_pdf,
+        warp::uniform_disk_pdf,
+    );
+    run(
+        f,
+        "uniform_hemisphere_pdf",
+        &ws,
+        warp::x8::uniform_hemisphere_pdf,
+        warp::uniform_hemisphere_pdf,
+    );
+    run(
+        f,
+        "uniform_sphere_pdf",
+        &ws,
+        warp::x8::uniform_sphere_pdf,
+        warp::uniform_sphere_pdf,
     );
 
     let ns: Vec<f32> = (0..N).map(|_| g.param(1e-3, 1e7)).collect();

@@ -192,8 +192,10 @@ proptest! {
         }
         let back = warp::concentric_disk_inverse(warp::concentric_disk(u));
         prop_assert!(back.is_finite());
-        let pdf = warp::uniform_disk_pdf();
-        prop_assert!(pdf > 0.0 && pdf.is_finite());
+        // Every point either map returns, rim included, lies in the pdf's support.
+        for p in [warp::concentric_disk(u), warp::polar_disk(u)] {
+            prop_assert_eq!(warp::uniform_disk_pdf(p), std::f32::consts::FRAC_1_PI, "{:?}", p);
+        }
     }
 
     #[test]
@@ -223,7 +225,8 @@ proptest! {
         prop_assert!(w.z > 0.0, "{:?} → {:?}", u, w);
         let pdf = warp::cosine_hemisphere_pdf(w.z);
         prop_assert!(pdf > 0.0 && pdf.is_finite());
-        prop_assert!(warp::uniform_hemisphere_pdf() > 0.0 && warp::uniform_sphere_pdf() > 0.0);
+        prop_assert!(warp::uniform_hemisphere_pdf(warp::uniform_hemisphere(u)) > 0.0);
+        prop_assert!(warp::uniform_sphere_pdf(warp::uniform_sphere(u)) > 0.0);
     }
 
     #[test]
@@ -232,8 +235,9 @@ proptest! {
         check_unit(w)?;
         prop_assert!(w.z as f64 >= 1.0 - h as f64 - 1e-6, "h={} {:?} → {:?}", h, u, w);
         prop_assert!(w.z <= 1.0);
-        let pdf = warp::uniform_cone_pdf(h);
-        prop_assert!(pdf > 0.0 && pdf.is_finite(), "pdf({}) = {}", h, pdf);
+        // The sampler's own direction is inside the pdf's support, boundary included.
+        let pdf = warp::uniform_cone_pdf(w, h);
+        prop_assert!(pdf > 0.0 && pdf.is_finite(), "pdf({:?}, {}) = {}", w, h, pdf);
         let back = warp::uniform_cone_inverse(w, h);
         prop_assert!(back.is_finite() && (0.0..=1.0).contains(&back.x) && (0.0..=1.0).contains(&back.y));
     }

@@ -8,7 +8,6 @@ use mcsample::seq::{
     quality::{is_elementary_net, net_violation},
 };
 use mcsample::verify::check_lanes;
-use mcsample::x8::{F32x8, U32x8, Vec2x8};
 
 const SHUTTER: (f32, f32) = (0.25, 0.75);
 
@@ -33,7 +32,7 @@ fn packets_equal_scalars_bit_for_bit() {
         for &pixel in &pixels {
             for filter in [PixelFilter::Box, PixelFilter::Tent] {
                 let seed = 17 * k as u32;
-                check_lanes::<U32x8, (Vec2x8, Vec2x8, F32x8), _, _>(
+                check_lanes::<u32, (Vec2, Vec2, f32)>(
                     &indices,
                     |i| {
                         let s = seq::x8::CameraSample::generate(pixel, i, seed, filter, shutter);

@@ -4,7 +4,7 @@
 use glam::DVec2;
 use mcsample::seq::{self, U32Lane};
 use mcsample::verify::{ChiSquare, check_lanes};
-use mcsample::x8::{F32x8, U32x8};
+use mcsample::x8::U32x8;
 
 /// Wellons's lowbias32, written out from its published definition (not from the crate).
 fn ref_lowbias32(mut x: u32) -> u32 {
@@ -138,13 +138,13 @@ fn packet_equals_scalar_bit_for_bit() {
     indices.extend([0, 1, u32::MAX, u32::MAX - 1, 0x8000_0000, 0xff, 0x100, 7]);
     for _ in 0..64 {
         let (d, s) = (rng.next_u32() % 256, rng.next_u32());
-        check_lanes::<U32x8, F32x8, _, _>(
+        check_lanes::<u32, f32>(
             &indices,
             |i| seq::x8::independent(i, d, s),
             |i| seq::independent(i, d, s),
         )
         .unwrap_or_else(|e| panic!("independent, dim {d} seed {s}: {e}"));
-        check_lanes::<U32x8, U32x8, _, _>(
+        check_lanes::<u32, u32>(
             &indices,
             |i| seq::x8::hash3(i, d, s),
             |i| seq::hash3(i, d, s),
@@ -158,7 +158,7 @@ fn packet_check_catches_a_wrong_lane() {
     // Negative control for the harness: a packet that mixes up dimensions is caught.
     let indices: Vec<u32> = (0..64).collect();
     assert!(
-        check_lanes::<U32x8, F32x8, _, _>(
+        check_lanes::<u32, f32>(
             &indices,
             |i| seq::x8::independent(i, 1, 0),
             |i| seq::independent(i, 0, 0),

@@ -17,7 +17,7 @@ use std::time::Instant;
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use mcsample::lane::{V2, V3};
 use mcsample::verify::{Cap, ChiSquare, PlanarLight, square_to_triangle, triangle_to_square};
-use mcsample::warp::{self, generic as g};
+use mcsample::warp;
 use mcsample::x8::{F32x8, Vec2x8, Vec3x8};
 use rand_core::Rng;
 use rand_pcg::Pcg32;
@@ -175,14 +175,14 @@ fn catalogue<'a>() -> Vec<Warp<'a>> {
         ($name:literal, $f:ident) => {
             w.push(Warp {
                 name: $name.into(),
-                s: Form::new(|u| warp::$f(u).extend(0.0)),
-                p: Form::new(|u| {
+                s: Form::new(|u: Vec2| warp::$f(u).extend(0.0)),
+                p: Form::new(|u: Vec2x8| {
                     let q = warp::x8::$f(u);
                     Vec3x8::new(q.x, q.y, F32x8::ZERO)
                 }),
-                r: Box::new(|u| DVec2::from(g::$f::<f64>(d2(u))).extend(0.0)),
-                pdf_s: Box::new(|_| warp::uniform_disk_pdf()),
-                pdf_r: Box::new(|_| g::uniform_disk_pdf::<f64>()),
+                r: Box::new(|u: DVec2| warp::$f(u).extend(0.0)),
+                pdf_s: Box::new(|p: Vec3| warp::uniform_disk_pdf(p.truncate())),
+                pdf_r: Box::new(|p: DVec3| warp::uniform_disk_pdf(p.truncate())),
                 chi2: Box::new(move |n| {
                     let u = seq(1);
                     ChiSquare::disk()
@@ -237,17 +237,9 @@ fn catalogue<'a>() -> Vec<Warp<'a>> {
         6,
         |u| warp::uniform_hemisphere(u),
         warp::x8::uniform_hemisphere(u),
-        g::uniform_hemisphere(u),
-        |w| if w.z > 0.0 {
-            warp::uniform_hemisphere_pdf()
-        } else {
-            0.0
-        },
-        if w.z > 0.0 {
-            g::uniform_hemisphere_pdf::<f64>()
-        } else {
-            0.0
-        }
+        warp::uniform_hemisphere(u),
+        |w| warp::uniform_hemisphere_pdf(w),
+        warp::uniform_hemisphere_pdf(w)
     );
     dir!(
         "cosine_hemisphere".into(),
@@ -255,9 +247,9 @@ fn catalogue<'a>() -> Vec<Warp<'a>> {
         6,
         |u| warp::cosine_hemisphere(u),
         warp::x8::cosine_hemisphere(u),
-        g::cosine_hemisphere(u),
+        warp::cosine_hemisphere(u),
         |w| warp::cosine_hemisphere_pdf(w.z),
-        g::cosine_hemisphere_pdf(w.z)
+        warp::cosine_hemisphere_pdf(w.z)
     );
     dir!(
         "uniform_sphere".into(),
@@ -265,9 +257,9 @@ fn catalogue<'a>() -> Vec<Warp<'a>> {
         6,
         |u| warp::uniform_sphere(u),
         warp::x8::uniform_sphere(u),
-        g::uniform_sphere(u),
-        |_w| warp::uniform_sphere_pdf(),
-        g::uniform_sphere_pdf::<f64>()
+        warp::uniform_sphere(u),
+        |w| warp::uniform_sphere_pdf(w),
+        warp::uniform_sphere_pdf(w)
     );
     for h in [0.3f32, 1e-3] {
         let h8 = F32x8::splat(h);
@@ -277,9 +269,9 @@ fn catalogue<'a>() -> Vec<Warp<'a>> {
             6,
             |u| warp::uniform_cone(u, h),
             warp::x8::uniform_cone(u, h8),
-            g::uniform_cone(u, h as f64),
-            |_w| warp::uniform_cone_pdf(h),
-            g::uniform_cone_pdf(h as f64)
+            warp::uniform_cone(u, h as f64),
+            |w| warp::uniform_cone_pdf(w, h),
+            warp::uniform_cone_pdf(w, h as f64)
         );
     }
     for (n, hs) in [(1.0f32, 1.0), (20.0, 0.8), (500.0, 0.06)] {
@@ -290,9 +282,9 @@ fn catalogue<'a>() -> Vec<Warp<'a>> {
             6,
             |u| warp::phong_lobe(u, n),
             warp::x8::phong_lobe(u, n8),
-            g::phong_lobe(u, n as f64),
+            warp::phong_lobe(u, n as f64),
             |w| warp::phong_lobe_pdf(w.z, n),
-            g::phong_lobe_pdf(w.z, n as f64)
+            warp::phong_lobe_pdf(w.z, n as f64)
         );
     }
 
@@ -300,9 +292,9 @@ fn catalogue<'a>() -> Vec<Warp<'a>> {
         name: "uniform_triangle".into(),
         s: Form::new(warp::uniform_triangle),
         p: Form::new(warp::x8::uniform_triangle),
-        r: Box::new(|u| o3(g::uniform_triangle::<f64>(d2(u)))),
+        r: Box::new(|u| o3(warp::uniform_triangle(d2(u)))),
         pdf_s: Box::new(|b| warp::uniform_triangle_pdf(b.truncate())),
-        pdf_r: Box::new(|b| g::uniform_triangle_pdf::<f64>(d2(b.truncate()))),
+        pdf_r: Box::new(|b| warp::uniform_triangle_pdf(d2(b.truncate()))),
         chi2: Box::new(move |n| {
             let u = seq(3);
             // The equal-area map (s, f) = ((b0+b1)², b1/(b0+b1)) turns the triangle's diagonal
@@ -327,9 +319,9 @@ fn catalogue<'a>() -> Vec<Warp<'a>> {
         p: Form::new(|u: Vec2x8| {
             Vec3x8::new(warp::x8::tent(u.x), warp::x8::tent(u.y), F32x8::ZERO)
         }),
-        r: Box::new(|u| DVec3::new(g::tent(u.x), g::tent(u.y), 0.0)),
+        r: Box::new(|u| DVec3::new(warp::tent(u.x), warp::tent(u.y), 0.0)),
         pdf_s: Box::new(|x| warp::tent_pdf(x.x) * warp::tent_pdf(x.y)),
-        pdf_r: Box::new(|x| g::tent_pdf(x.x) * g::tent_pdf(x.y)),
+        pdf_r: Box::new(|x| warp::tent_pdf(x.x) * warp::tent_pdf(x.y)),
         chi2: Box::new(move |n| {
             let u = seq(4);
             ChiSquare::square()
@@ -369,11 +361,9 @@ fn catalogue<'a>() -> Vec<Warp<'a>> {
             name: format!("spherical_triangle {label}"),
             s: Form::new(move |u| warp::spherical_triangle(u, a, b, c).0),
             p: Form::new(move |u| warp::x8::spherical_triangle(u, a8, b8, c8).0),
-            r: Box::new(move |u| o3(g::spherical_triangle::<f64>(d2(u), d3(a), d3(b), d3(c)).0)),
+            r: Box::new(move |u| o3(warp::spherical_triangle(d2(u), d3(a), d3(b), d3(c)).0)),
             pdf_s: Box::new(move |x| warp::spherical_triangle_pdf(x, a, b, c)),
-            pdf_r: Box::new(move |x| {
-                g::spherical_triangle_pdf::<f64>(x.into(), d3(a), d3(b), d3(c))
-            }),
+            pdf_r: Box::new(move |x| warp::spherical_triangle_pdf(x.into(), d3(a), d3(b), d3(c))),
             chi2: Box::new(move |n| {
                 let u = seq(5);
                 PlanarLight::triangle(a, b, c)
@@ -403,12 +393,10 @@ fn catalogue<'a>() -> Vec<Warp<'a>> {
             name: format!("spherical_rectangle {label}"),
             s: Form::new(move |u| warp::spherical_rectangle(u, s0, ex, ey).0),
             p: Form::new(move |u| warp::x8::spherical_rectangle(u, s8, ex8, ey8).0),
-            r: Box::new(
-                move |u| o3(g::spherical_rectangle::<f64>(d2(u), d3(s0), d3(ex), d3(ey)).0),
-            ),
+            r: Box::new(move |u| o3(warp::spherical_rectangle(d2(u), d3(s0), d3(ex), d3(ey)).0)),
             pdf_s: Box::new(move |x| warp::spherical_rectangle_pdf(x.normalize(), s0, ex, ey)),
             pdf_r: Box::new(move |x| {
-                g::spherical_rectangle_pdf::<f64>(x.normalize().into(), d3(s0), d3(ex), d3(ey))
+                warp::spherical_rectangle_pdf(x.normalize().into(), d3(s0), d3(ex), d3(ey))
             }),
             chi2: Box::new(move |n| {
                 let u = seq(6);
@@ -480,17 +468,17 @@ fn stability(quick: bool) -> Vec<(String, f64, f64, f64)> {
             .collect();
         let (a, b, c) = (tri[0], tri[1], tri[2]);
         let omega = 1.0
-            / g::spherical_triangle_pdf::<f64>(
-                g::arvo_triangle::<f64>(V2::new(0.3, 0.3), d3(a), d3(b), d3(c)),
+            / warp::spherical_triangle_pdf(
+                warp::arvo_triangle(V2::new(0.3, 0.3), d3(a), d3(b), d3(c)),
                 d3(a),
                 d3(b),
                 d3(c),
             );
         let mut worst = 0.0f64;
         for &u in &pts {
-            let w32 = g::arvo_triangle::<f32>(u.into(), a.into(), b.into(), c.into());
-            let w64 = g::arvo_triangle::<f64>(d2(u.as_dvec2()), d3(a), d3(b), d3(c));
-            let e = (Vec3::from(w32).as_dvec3() - DVec3::from(w64)).length();
+            let w32 = warp::arvo_triangle(u, a, b, c);
+            let w64 = warp::arvo_triangle(d2(u.as_dvec2()), d3(a), d3(b), d3(c));
+            let e = (w32.as_dvec3() - DVec3::from(w64)).length();
             worst = if worse(e, worst) { e } else { worst };
         }
         rows.push((
@@ -505,17 +493,12 @@ fn stability(quick: bool) -> Vec<(String, f64, f64, f64)> {
             Vec3::new(s, 0.0, 0.0),
             Vec3::new(0.0, s, 0.0),
         );
-        let omega = 1.0
-            / g::spherical_rectangle_pdf::<f64>(V3::new(0.0, 0.0, 1.0), d3(corner), d3(ex), d3(ey));
+        let omega =
+            1.0 / warp::spherical_rectangle_pdf(V3::new(0.0, 0.0, 1.0), d3(corner), d3(ex), d3(ey));
         let mut worst = 0.0f64;
         for &u in &pts {
-            let p32 = Vec3::from(g::urena_rectangle::<f32>(
-                u.into(),
-                corner.into(),
-                ex.into(),
-                ey.into(),
-            ));
-            let p64 = DVec3::from(g::urena_rectangle::<f64>(
+            let p32 = warp::urena_rectangle(u, corner, ex, ey);
+            let p64 = DVec3::from(warp::urena_rectangle(
                 d2(u.as_dvec2()),
                 d3(corner),
                 d3(ex),

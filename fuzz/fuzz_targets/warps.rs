@@ -63,7 +63,16 @@ fuzz_target!(|data: &[u8]| {
     if u_finite && !h.is_nan() {
         assert!(w.is_finite(), "uniform_cone({u}, {h}) = {w}");
     }
-    pdf_ok(warp::uniform_cone_pdf(h), "uniform_cone_pdf");
+    let pdf = warp::uniform_cone_pdf(w, h);
+    assert_eq!(
+        pdf.to_bits(),
+        x8::uniform_cone_pdf(Vec3x8::splat(w), F32x8::splat(h)).to_array()[0].to_bits(),
+        "uniform_cone_pdf lanes"
+    );
+    pdf_ok(pdf, "uniform_cone_pdf");
+    if u_finite && h > 0.0 && !h.is_nan() {
+        assert!(pdf > 0.0, "uniform_cone_pdf({w}, {h}) = 0 at its own sample");
+    }
     let w = warp::phong_lobe(u, n);
     same3(w, x8::phong_lobe(u8, F32x8::splat(n)), "phong_lobe");
     if u_finite && !n.is_nan() {

@@ -6,7 +6,7 @@ use super::sobol::sobol_bits;
 use crate::lane::U32Lane;
 use crate::lane::V2;
 use crate::math::Math;
-use crate::warp::generic::{concentric_disk, tent};
+use crate::warp::{concentric_disk, tent};
 
 /// The pixel reconstruction filter that film offsets are drawn from (importance sampling the
 /// filter, so every sample has weight 1).

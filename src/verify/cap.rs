@@ -30,7 +30,7 @@ use super::chi2::{ChiSquare, ChiSquareResult, Sphere};
 ///         let u = glam::Vec2::new((i as f32 + 0.5) / 100_000.0, (k >> 8) as f32 / 16_777_216.0);
 ///         warp::uniform_cone(u, h)
 ///     },
-///     |_w| warp::uniform_cone_pdf(h) as f64,
+///     |w| warp::uniform_cone_pdf(w.as_vec3(), h) as f64,
 /// );
 /// assert!(result.p_value > 1e-3, "{result}");
 /// ```

@@ -52,59 +52,36 @@ impl Bits for Vec3 {
     }
 }
 
-/// An 8-lane packet with a scalar twin type, split into and built from its lanes.
+/// A scalar value with an 8-lane packet twin: how [`check_lanes`] splits packets into lanes and
+/// builds them back.
 ///
-/// Implemented for [`F32x8`] (`f32`), [`U32x8`] (`u32`), [`Vec2x8`] (`glam::Vec2`), [`Vec3x8`]
-/// (`glam::Vec3`), and tuples of up to three packets (tuples of the scalars), which is how
-/// [`check_lanes`] takes several arguments or returns several values.
-pub trait Packet: Copy {
-    /// The type of one lane.
-    type Scalar: Copy + fmt::Debug + Bits;
+/// Implemented for `f32` ([`F32x8`]), `u32` ([`U32x8`]), [`glam::Vec2`] ([`Vec2x8`]),
+/// [`glam::Vec3`] ([`Vec3x8`]), and tuples of up to three of them (tuples of packets), which is
+/// how a function of several arguments or results is checked.
+pub trait Scalar: Copy + fmt::Debug + Bits {
+    /// The packet of eight values.
+    type X8: Copy;
     /// The packet whose lane `i` is `lanes[i]`.
-    fn from_lanes(lanes: [Self::Scalar; 8]) -> Self;
-    /// The eight lanes.
-    fn to_lanes(self) -> [Self::Scalar; 8];
+    fn pack(lanes: [Self; 8]) -> Self::X8;
+    /// The eight lanes of a packet.
+    fn unpack(packet: Self::X8) -> [Self; 8];
 }
 
-impl Packet for F32x8 {
-    type Scalar = f32;
-    fn from_lanes(lanes: [f32; 8]) -> Self {
-        F32x8::new(lanes)
-    }
-    fn to_lanes(self) -> [f32; 8] {
-        self.to_array()
-    }
+macro_rules! scalar_impls {
+    ($($s:ty => $p:ty),+) => {$(
+        impl Scalar for $s {
+            type X8 = $p;
+            fn pack(lanes: [Self; 8]) -> $p {
+                <$p>::from(lanes)
+            }
+            fn unpack(packet: $p) -> [Self; 8] {
+                packet.to_array()
+            }
+        }
+    )+};
 }
 
-impl Packet for U32x8 {
-    type Scalar = u32;
-    fn from_lanes(lanes: [u32; 8]) -> Self {
-        U32x8::new(lanes)
-    }
-    fn to_lanes(self) -> [u32; 8] {
-        self.to_array()
-    }
-}
-
-impl Packet for Vec2x8 {
-    type Scalar = Vec2;
-    fn from_lanes(lanes: [Vec2; 8]) -> Self {
-        Vec2x8::from(lanes)
-    }
-    fn to_lanes(self) -> [Vec2; 8] {
-        self.to_array()
-    }
-}
-
-impl Packet for Vec3x8 {
-    type Scalar = Vec3;
-    fn from_lanes(lanes: [Vec3; 8]) -> Self {
-        Vec3x8::from(lanes)
-    }
-    fn to_lanes(self) -> [Vec3; 8] {
-        self.to_array()
-    }
-}
+scalar_impls!(f32 => F32x8, u32 => U32x8, Vec2 => Vec2x8, Vec3 => Vec3x8);
 
 macro_rules! tuple_impls {
     ($(($($t:ident $i:tt),+))+) => {$(
@@ -114,13 +91,13 @@ macro_rules! tuple_impls {
             }
         }
 
-        impl<$($t: Packet),+> Packet for ($($t,)+) {
-            type Scalar = ($($t::Scalar,)+);
-            fn from_lanes(lanes: [Self::Scalar; 8]) -> Self {
-                ($($t::from_lanes(lanes.map(|l| l.$i)),)+)
+        impl<$($t: Scalar),+> Scalar for ($($t,)+) {
+            type X8 = ($($t::X8,)+);
+            fn pack(lanes: [Self; 8]) -> Self::X8 {
+                ($($t::pack(lanes.map(|l| l.$i)),)+)
             }
-            fn to_lanes(self) -> [Self::Scalar; 8] {
-                let split = ($(self.$i.to_lanes(),)+);
+            fn unpack(packet: Self::X8) -> [Self; 8] {
+                let split = ($($t::unpack(packet.$i),)+);
                 core::array::from_fn(|k| ($(split.$i[k],)+))
             }
         }
@@ -193,21 +170,20 @@ impl std::error::Error for LaneMismatch {}
 /// patterns, NaNs included (a NaN with another sign or payload is a mismatch; the crate's
 /// contract is bit equality, and its packet and scalar forms run the same operations).
 ///
-/// Several arguments or results: use tuples, e.g. `I = (Vec2x8, F32x8)` with scalar input
-/// `(Vec2, f32)`. Annotate the closure arguments so that `I` can be inferred.
+/// The scalar inputs fix the types, so the crate's generic functions can be passed as they are:
+/// `check_lanes(&us, warp::x8::concentric_disk, warp::concentric_disk)`. Several arguments or
+/// results: use tuples, e.g. scalar input `(Vec2, f32)` and packet input `(Vec2x8, F32x8)`.
 ///
 /// Returns the number of lanes compared (the number of inputs rounded up to a multiple of 8), or
 /// the first mismatch with the total count of mismatching lanes (boxed, as it is large).
-pub fn check_lanes<I, O, P, S>(
-    inputs: &[I::Scalar],
-    mut packet: P,
-    mut scalar: S,
+pub fn check_lanes<S, T>(
+    inputs: &[S],
+    mut packet: impl FnMut(S::X8) -> T::X8,
+    mut scalar: impl FnMut(S) -> T,
 ) -> Result<usize, Box<LaneMismatch>>
 where
-    I: Packet,
-    O: Packet,
-    P: FnMut(I) -> O,
-    S: FnMut(I::Scalar) -> O::Scalar,
+    S: Scalar,
+    T: Scalar,
 {
     let n = inputs.len();
     let chunks = n.div_ceil(8);
@@ -216,8 +192,8 @@ where
     let mut mismatches = 0;
     let (mut pb, mut sb) = (Vec::new(), Vec::new());
     for c in 0..chunks {
-        let lanes: [I::Scalar; 8] = core::array::from_fn(|k| inputs[(c * 8 + k) % n]);
-        let out = packet(I::from_lanes(lanes)).to_lanes();
+        let lanes: [S; 8] = core::array::from_fn(|k| inputs[(c * 8 + k) % n]);
+        let out = T::unpack(packet(S::pack(lanes)));
         for (k, (&input, got)) in lanes.iter().zip(out).enumerate() {
             let want = scalar(input);
             pb.clear();

@@ -34,8 +34,8 @@
 //! # Lane equality
 //!
 //! [`check_lanes`] runs a packet function on inputs packed eight at a time and its scalar twin on
-//! each input, and compares every lane's output by its bit pattern ([`Bits`]). Packets and their
-//! scalars are related by [`Packet`]; tuples of packets give functions of several arguments.
+//! each input, and compares every lane's output by its bit pattern ([`Bits`]). Scalars and their
+//! packets are related by [`Scalar`]; tuples give functions of several arguments.
 //!
 //! # Example: testing your own warp
 //!
@@ -101,5 +101,5 @@ mod planar;
 pub use cap::Cap;
 pub use chi2::{ChiSquare, ChiSquareResult, Disk, Domain, ExpectedCounts, Sphere, Square};
 pub use gamma::{chi2_sf, gamma_p, gamma_q, ln_gamma, sidak_alpha};
-pub use lanes::{Bits, LaneMismatch, Packet, check_lanes};
+pub use lanes::{Bits, LaneMismatch, Scalar, check_lanes};
 pub use planar::{PlanarLight, square_to_triangle, triangle_to_square};

@@ -1,6 +1,6 @@
 //! Small pieces that several warps share: the input contract and the angle of a direction.
 
-use crate::lane::V2;
+use crate::lane::{V2, V3};
 use crate::math::Math;
 
 /// 1 − 2⁻²⁴, the largest f32 below 1.
@@ -34,4 +34,12 @@ pub(crate) fn azimuth_fraction<L: Math>(x: L, y: L) -> L {
 #[inline(always)]
 pub(crate) fn sin_from_one_minus_cos<L: Math>(t: L) -> L {
     (t * (L::c(2.0) - t)).max(L::c(0.0)).sqrt()
+}
+
+/// 1 − z of a unit vector, as (x² + y²)/(1 + z) in the upper half, where 1 − z would cancel
+/// near the pole, and as 1 − z below.
+#[inline(always)]
+pub(crate) fn one_minus_z<L: Math>(w: V3<L>) -> L {
+    let rho2 = w.x.mul_add(w.x, w.y * w.y);
+    L::select(w.z.gt(L::c(0.0)), rho2 / (L::c(1.0) + w.z), L::c(1.0) - w.z)
 }

@@ -5,59 +5,72 @@
 
 use crate::lane::{V2, V3};
 use crate::math::Math;
-use crate::warp::common::{azimuth_fraction, clamp_u, sin_from_one_minus_cos};
+use crate::point::{Point2, Point3};
+use crate::warp::common::{azimuth_fraction, clamp_u, one_minus_z, sin_from_one_minus_cos};
 
 /// The largest meaningful h: the whole sphere.
 const H_MAX: f64 = 2.0;
 
-/// h = 1 − cos θmax, clamped to [0, 2].
-#[inline(always)]
+/// h = 1 − cos θmax, clamped to [0, 2]. NaN gives NaN.
+///
+/// Loses precision for narrow cones, where cos θmax rounds towards 1: prefer
+/// [`cone_h_from_sin2`] when sin²θmax is at hand.
+#[inline]
 pub fn cone_h_from_cos<L: Math>(cos_max: L) -> L {
     (L::c(1.0) - cos_max).clamp(L::c(0.0), L::c(H_MAX)).canon()
 }
 
-/// h from sin²θmax (θmax ≤ π/2), as s²/(1 + √(1 − s²)): exact algebra, no cancellation and no
-/// threshold. s² is clamped to [0, 1].
-#[inline(always)]
+/// h = 1 − cos θmax from sin²θmax (θmax ≤ π/2), as s²/(1 + √(1 − s²)): exact algebra, with no
+/// cancellation at any size and no threshold. s² is clamped to [0, 1]; NaN gives NaN.
+#[inline]
 pub fn cone_h_from_sin2<L: Math>(sin2_max: L) -> L {
     let s2 = sin2_max.clamp(L::c(0.0), L::c(1.0));
     (s2 / (L::c(1.0) + (L::c(1.0) - s2).sqrt())).canon()
 }
 
-/// t = u₀h is 1 − cos θ; sin θ = √(t(2 − t)); φ = 2πu₁. h is clamped to [0, 2].
-#[inline(always)]
-pub fn uniform_cone<L: Math>(u: V2<L>, h: L) -> V3<L> {
-    let u = clamp_u(u);
+/// Square → cone about +z with h = 1 − cos θmax, uniform in solid angle (pdf 1/(2πh) per
+/// steradian, [`uniform_cone_pdf`]).
+///
+/// t = u₀h is 1 − cos θ, so z = 1 − t and sin θ = √(t(2 − t)) keep full relative precision for
+/// the narrowest cones; φ = 2πu₁. Build h with [`cone_h_from_sin2`] or [`cone_h_from_cos`].
+/// u is clamped to [0, 1]² and h to [0, 2]; h = 0 puts every sample on the axis (pdf 0); NaN in u
+/// or h gives NaN.
+#[inline]
+pub fn uniform_cone<P: Point2<Lane = L>, L: Math>(u: P, h: L) -> P::Vec3 {
+    let u = clamp_u(u.to_lanes());
     let h = h.clamp(L::c(0.0), L::c(H_MAX));
     let t = u.x * h;
     let sin_theta = sin_from_one_minus_cos(t);
     let (s, c) = u.y.sincos_2pi();
-    V3::new(sin_theta * c, sin_theta * s, L::c(1.0) - t).nan_where(u.any_nan() | h.is_nan())
+    let w = V3::new(sin_theta * c, sin_theta * s, L::c(1.0) - t);
+    Point3::from_lanes(w.nan_where(u.any_nan() | h.is_nan()))
 }
 
-/// 1/(2πh) per steradian inside the cone. h ≤ 0 (a degenerate cone) and NaN give 0.
-#[inline(always)]
-pub fn uniform_cone_pdf<L: Math>(h: L) -> L {
+/// pdf per steradian of [`uniform_cone`] at direction `w`: 1/(2πh) inside the cone, 0 outside,
+/// for h ≤ 0 (a degenerate cone) and for NaN in `w` or `h`. h is clamped to at most 2.
+///
+/// Inside means 1 − cos θ ≤ h·(1 + 2⁻²⁰), with 1 − cos θ taken as (x² + y²)/(1 + z) so that it
+/// keeps its precision near the axis. The margin is a few ulp: every direction [`uniform_cone`]
+/// returns, including at u₀ = 1 and for h down to 1e-9, gets the non-zero pdf, and the pdf
+/// drops to 0 within a relative 1e-6 of the true boundary.
+#[inline]
+pub fn uniform_cone_pdf<P: Point3<Lane = L>, L: Math>(w: P, h: L) -> L {
     // NaN must reach the select below as NaN, so it goes in the second operand of min.
     let h = L::c(H_MAX).min(h);
+    let inside = one_minus_z(w.to_lanes()).le(h * L::c(1.0 + 1.0 / 1_048_576.0));
     L::select(
-        h.gt(L::c(0.0)),
+        h.gt(L::c(0.0)) & inside,
         L::c(0.5 * core::f64::consts::FRAC_1_PI) / h,
         L::c(0.0),
     )
 }
 
-/// Inverse: t = (x² + y²)/(1 + z) (no cancellation near the axis), u₀ = t/h clamped to [0, 1].
-#[inline(always)]
-pub fn uniform_cone_inverse<L: Math>(w: V3<L>, h: L) -> V2<L> {
-    let t = one_minus_z(w);
-    let u0 = (t / h).clamp(L::c(0.0), L::c(1.0));
-    V2::new(u0, azimuth_fraction(w.x, w.y)).nan_where(w.any_nan() | h.is_nan())
-}
-
-/// 1 − z of a unit vector, as (x² + y²)/(1 + z) in the upper half and 1 − z below.
-#[inline(always)]
-pub(crate) fn one_minus_z<L: Math>(w: V3<L>) -> L {
-    let rho2 = w.x.mul_add(w.x, w.y * w.y);
-    L::select(w.z.gt(L::c(0.0)), rho2 / (L::c(1.0) + w.z), L::c(1.0) - w.z)
+/// Inverse of [`uniform_cone`]: u₀ = t/h with t = 1 − z = (x² + y²)/(1 + z) (no cancellation near
+/// the axis), clamped to [0, 1]; u₁ = azimuth/2π. NaN gives NaN.
+#[inline]
+pub fn uniform_cone_inverse<P: Point3<Lane = L>, L: Math>(w: P, h: L) -> P::Vec2 {
+    let w = w.to_lanes();
+    let u0 = (one_minus_z(w) / h).clamp(L::c(0.0), L::c(1.0));
+    let u = V2::new(u0, azimuth_fraction(w.x, w.y));
+    Point2::from_lanes(u.nan_where(w.any_nan() | h.is_nan()))
 }

@@ -3,6 +3,7 @@
 
 use crate::lane::V2;
 use crate::math::Math;
+use crate::point::Point2;
 use crate::warp::common::{azimuth_fraction, clamp_u};
 
 /// The concentric map, also returning 1 − r for the radius r of the point.
@@ -32,15 +33,24 @@ pub(crate) fn concentric_with_one_minus_r<L: Math>(u: V2<L>) -> (V2<L>, L) {
     (p, one_minus_r)
 }
 
-#[inline(always)]
-pub fn concentric_disk<L: Math>(u: V2<L>) -> V2<L> {
-    concentric_with_one_minus_r(u).0.nan_where(u.any_nan())
+/// Square → unit disk by Shirley and Chiu's concentric map (area pdf 1/π, [`uniform_disk_pdf`]).
+///
+/// Concentric squares of u become concentric circles, so strata stay compact. u is clamped to
+/// [0, 1]²; (½, ½) ↦ (0, 0) exactly; NaN in either coordinate gives NaN in both.
+#[inline]
+pub fn concentric_disk<P: Point2>(u: P) -> P {
+    let u = u.to_lanes();
+    P::from_lanes(concentric_with_one_minus_r(u).0.nan_where(u.any_nan()))
 }
 
-/// Inverse of the concentric map. The larger |coordinate| selects the wedge; atan of the ratio of
-/// the smaller to it gives t. p = 0 maps to (½, ½).
-#[inline(always)]
-pub fn concentric_disk_inverse<L: Math>(p: V2<L>) -> V2<L> {
+/// Inverse of [`concentric_disk`]: disk point → u ∈ [0, 1]², within 3e-7 in f32.
+///
+/// The larger |coordinate| selects the wedge; atan of the ratio of the smaller to it gives t.
+/// p = 0 maps to (½, ½). Points outside the disk map as if radially scaled onto the square's
+/// boundary (clamped to [0, 1]²); NaN gives NaN.
+#[inline]
+pub fn concentric_disk_inverse<P: Point2<Lane = L>, L: Math>(p: P) -> P {
+    let p = p.to_lanes();
     let x_major = p.x.abs().ge(p.y.abs());
     let major = L::select(x_major, p.x, p.y);
     let minor = L::select(x_major, p.y, p.x);
@@ -51,30 +61,41 @@ pub fn concentric_disk_inverse<L: Math>(p: V2<L>) -> V2<L> {
     let a = L::select(x_major, r, r * t);
     let b = L::select(x_major, r * t, r);
     // A point a rounding outside the disk would map a rounding outside the square: clamp.
-    clamp_u(V2::new(
+    let u = clamp_u(V2::new(
         a.mul_add(L::c(0.5), L::c(0.5)),
         b.mul_add(L::c(0.5), L::c(0.5)),
-    ))
-    .nan_where(p.any_nan())
+    ));
+    P::from_lanes(u.nan_where(p.any_nan()))
 }
 
-/// The polar map: r = √u₀, φ = 2πu₁.
-#[inline(always)]
-pub fn polar_disk<L: Math>(u: V2<L>) -> V2<L> {
-    let u = clamp_u(u);
+/// Square → unit disk by the polar map r = √u₀, φ = 2πu₁ (area pdf 1/π, [`uniform_disk_pdf`]).
+///
+/// u is clamped to [0, 1]²; NaN in either coordinate gives NaN in both.
+#[inline]
+pub fn polar_disk<P: Point2<Lane = L>, L: Math>(u: P) -> P {
+    let u = clamp_u(u.to_lanes());
     let r = u.x.sqrt();
     let (s, c) = u.y.sincos_2pi();
-    V2::new(r * c, r * s).nan_where(u.any_nan())
+    P::from_lanes(V2::new(r * c, r * s).nan_where(u.any_nan()))
 }
 
-/// Inverse of the polar map: u₀ = |p|², u₁ = azimuth/2π in [0, 1).
-#[inline(always)]
-pub fn polar_disk_inverse<L: Math>(p: V2<L>) -> V2<L> {
-    V2::new(p.length_squared(), azimuth_fraction(p.x, p.y)).nan_where(p.any_nan())
+/// Inverse of [`polar_disk`]: u₀ = |p|², u₁ = azimuth/2π in [0, 1). NaN gives NaN.
+#[inline]
+pub fn polar_disk_inverse<P: Point2>(p: P) -> P {
+    let p = p.to_lanes();
+    P::from_lanes(V2::new(p.length_squared(), azimuth_fraction(p.x, p.y)).nan_where(p.any_nan()))
 }
 
-/// Area pdf of a uniform point in the unit disk: 1/π.
-#[inline(always)]
-pub fn uniform_disk_pdf<L: Math>() -> L {
-    L::c(core::f64::consts::FRAC_1_PI)
+/// Area pdf of [`concentric_disk`] and [`polar_disk`] at `p`: 1/π inside the unit disk, 0
+/// outside it and for NaN.
+///
+/// "Inside" is |p|² ≤ 1 + 2⁻²⁰, so that rim points, whose rounded radius can exceed 1 by a few
+/// ulp, keep their pdf: every point either map returns gets 1/π.
+#[inline]
+pub fn uniform_disk_pdf<P: Point2<Lane = L>, L: Math>(p: P) -> L {
+    let inside = p
+        .to_lanes()
+        .length_squared()
+        .le(L::c(1.0 + 1.0 / 1_048_576.0));
+    L::select(inside, L::c(core::f64::consts::FRAC_1_PI), L::c(0.0))
 }

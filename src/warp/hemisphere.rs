@@ -2,44 +2,61 @@
 
 use crate::lane::{V2, V3};
 use crate::math::Math;
+use crate::point::{Point2, Point3};
 use crate::warp::common::{azimuth_fraction, clamp_u, clamp01};
 use crate::warp::disk::{concentric_disk_inverse, concentric_with_one_minus_r};
 
-/// Uniform hemisphere: z = u₀, r = √((1 − z)(1 + z)), φ = 2πu₁. The factored form keeps r
-/// accurate near the pole, where 1 − z² would cancel.
-#[inline(always)]
-pub fn uniform_hemisphere<L: Math>(u: V2<L>) -> V3<L> {
-    let u = clamp_u(u);
+/// Square → upper hemisphere (+z), uniform in solid angle (pdf 1/(2π) per steradian,
+/// [`uniform_hemisphere_pdf`]).
+///
+/// z = u₀, r = √((1 − z)(1 + z)), φ = 2πu₁: the factored form keeps r accurate near the pole,
+/// where 1 − z² would cancel. u is clamped to [0, 1]²; NaN gives NaN.
+#[inline]
+pub fn uniform_hemisphere<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
+    let u = clamp_u(u.to_lanes());
     let z = u.x;
     let r = ((L::c(1.0) - z) * (L::c(1.0) + z)).max(L::c(0.0)).sqrt();
     let (s, c) = u.y.sincos_2pi();
-    V3::new(r * c, r * s, z).nan_where(u.any_nan())
+    Point3::from_lanes(V3::new(r * c, r * s, z).nan_where(u.any_nan()))
 }
 
-#[inline(always)]
-pub fn uniform_hemisphere_pdf<L: Math>() -> L {
-    L::c(0.5 * core::f64::consts::FRAC_1_PI)
+/// pdf per steradian of [`uniform_hemisphere`] at direction `w`: 1/(2π) for w.z ≥ 0, else 0
+/// (also for NaN in any component).
+#[inline]
+pub fn uniform_hemisphere_pdf<P: Point3<Lane = L>, L: Math>(w: P) -> L {
+    let w = w.to_lanes();
+    let inside = w.z.ge(L::c(0.0)) & !w.any_nan();
+    L::select(inside, L::c(0.5 * core::f64::consts::FRAC_1_PI), L::c(0.0))
 }
 
-/// Inverse: u₀ = z (clamped to [0, 1]), u₁ = azimuth/2π.
-#[inline(always)]
-pub fn uniform_hemisphere_inverse<L: Math>(w: V3<L>) -> V2<L> {
-    V2::new(clamp01(w.z), azimuth_fraction(w.x, w.y)).nan_where(w.any_nan())
+/// Inverse of [`uniform_hemisphere`] for a unit direction: u = (z, azimuth/2π) in
+/// [0, 1] × [0, 1), z clamped to [0, 1]. NaN gives NaN.
+#[inline]
+pub fn uniform_hemisphere_inverse<P: Point3>(w: P) -> P::Vec2 {
+    let w = w.to_lanes();
+    Point2::from_lanes(V2::new(clamp01(w.z), azimuth_fraction(w.x, w.y)).nan_where(w.any_nan()))
 }
 
-/// Cosine hemisphere: the concentric disk lifted to the hemisphere, z = √((1 − r)(1 + r)) with
-/// 1 − r exact from the map itself, which stays accurate at the rim.
-#[inline(always)]
-pub fn cosine_hemisphere<L: Math>(u: V2<L>) -> V3<L> {
+/// Square → upper hemisphere (+z) with pdf cos θ/π per steradian
+/// ([`cosine_hemisphere_pdf`]), by Malley's method: the concentric disk lifted by
+/// z = √((1 − r)(1 + r)), with 1 − r exact from the map itself so that z stays accurate at the
+/// rim.
+///
+/// u is clamped to [0, 1]²; boundary u gives a finite z ≥ 0; NaN gives NaN. A rim sample can have
+/// z = 0 and so pdf 0: callers drop it.
+#[inline]
+pub fn cosine_hemisphere<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
+    let u = u.to_lanes();
     let (p, one_minus_r) = concentric_with_one_minus_r(u);
     let z = (one_minus_r * (L::c(2.0) - one_minus_r))
         .max(L::c(0.0))
         .sqrt();
-    V3::new(p.x, p.y, z).nan_where(u.any_nan())
+    Point3::from_lanes(V3::new(p.x, p.y, z).nan_where(u.any_nan()))
 }
 
-/// pdf per steradian: cos θ/π for cos θ > 0, else 0 (the rim and below; NaN gives 0).
-#[inline(always)]
+/// pdf per steradian of [`cosine_hemisphere`]: cos θ/π for cos θ > 0, else 0 (the rim, below it,
+/// and NaN). cos θ decides the support, so it is all the pdf needs to see.
+#[inline]
 pub fn cosine_hemisphere_pdf<L: Math>(cos_theta: L) -> L {
     L::select(
         cos_theta.gt(L::c(0.0)),
@@ -48,8 +65,9 @@ pub fn cosine_hemisphere_pdf<L: Math>(cos_theta: L) -> L {
     )
 }
 
-/// Inverse: the concentric inverse of the direction's (x, y).
-#[inline(always)]
-pub fn cosine_hemisphere_inverse<L: Math>(w: V3<L>) -> V2<L> {
-    concentric_disk_inverse(V2::new(w.x, w.y))
+/// Inverse of [`cosine_hemisphere`]: the [`concentric_disk_inverse`] of the direction's (x, y).
+#[inline]
+pub fn cosine_hemisphere_inverse<P: Point3>(w: P) -> P::Vec2 {
+    let w = w.to_lanes();
+    Point2::from_lanes(concentric_disk_inverse(V2::new(w.x, w.y)))
 }

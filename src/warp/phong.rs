@@ -2,11 +2,11 @@
 
 use crate::lane::{V2, V3};
 use crate::math::Math;
-use crate::warp::common::{azimuth_fraction, clamp_u, sin_from_one_minus_cos};
-use crate::warp::cone::one_minus_z;
+use crate::point::{Point2, Point3};
+use crate::warp::common::{azimuth_fraction, clamp_u, one_minus_z, sin_from_one_minus_cos};
 
-/// Exponents are clamped to [0, N_MAX]. A lobe sharper than this is a mirror: route it with a
-/// specular flag, not through a pdf of 10¹⁹.
+/// Exponents are clamped to [0, `PHONG_N_MAX`]. A lobe sharper than this is a mirror: route it
+/// with a specular flag, not through a pdf of 10¹⁹.
 pub const PHONG_N_MAX: f32 = 1.0e20;
 
 #[inline(always)]
@@ -14,24 +14,31 @@ fn clamp_n<L: Math>(n: L) -> L {
     n.clamp(L::c(0.0), L::c(PHONG_N_MAX as f64))
 }
 
-/// t = 1 − cos α = −expm1(ln(u₀)/(n+1)), sin α = √(t(2 − t)), φ = 2πu₁.
+/// Square → Phong lobe about +z, pdf (n+1)/(2π)·cosⁿα per steradian ([`phong_lobe_pdf`]).
 ///
-/// The naive cos α = u₀^{1/(n+1)} rounds to 1 for most u₀ when n is large (157 distinct directions
-/// from 1e5 samples at n = 1e6); expm1 keeps t, and with it sin α, to full relative precision.
-#[inline(always)]
-pub fn phong_lobe<L: Math>(u: V2<L>, n: L) -> V3<L> {
-    let u = clamp_u(u);
+/// t = 1 − cos α = −expm1(ln(u₀)/(n+1)), sin α = √(t(2 − t)), φ = 2πu₁. The naive
+/// cos α = u₀^{1/(n+1)} rounds to 1 for most u₀ when n is large (157 distinct directions from
+/// 1e5 samples at n = 1e6); expm1 keeps t, and with it sin α, to full relative precision.
+///
+/// u is clamped to [0, 1]² and n to [0, [`PHONG_N_MAX`]]; u₀ = 0 gives a horizon direction
+/// (pdf 0); NaN in u or n gives NaN.
+#[inline]
+pub fn phong_lobe<P: Point2<Lane = L>, L: Math>(u: P, n: L) -> P::Vec3 {
+    let u = clamp_u(u.to_lanes());
     let n = clamp_n(n);
     let t = -(u.x.ln() / (n + L::c(1.0))).exp_m1();
     let sin_a = sin_from_one_minus_cos(t);
     let (s, c) = u.y.sincos_2pi();
-    V3::new(sin_a * c, sin_a * s, L::c(1.0) - t).nan_where(u.any_nan() | n.is_nan())
+    let w = V3::new(sin_a * c, sin_a * s, L::c(1.0) - t);
+    Point3::from_lanes(w.nan_where(u.any_nan() | n.is_nan()))
 }
 
-/// (n+1)/(2π)·exp(n·ln cos α) for cos α > 0, else 0 (the horizon is outside the support, which
-/// makes n = 0 agree with the open hemisphere). NaN gives 0. cos α above 1, which rounding can
-/// produce from a slightly long vector, counts as 1.
-#[inline(always)]
+/// pdf per steradian of [`phong_lobe`]: (n+1)/(2π)·exp(n·ln cos α) for cos α > 0, else 0.
+///
+/// cos α decides the support, so it is all the pdf needs to see. The horizon is outside the
+/// support, which makes n = 0 agree with the open hemisphere. NaN gives 0. cos α above 1, which
+/// rounding can produce from a slightly long vector, counts as 1.
+#[inline]
 pub fn phong_lobe_pdf<L: Math>(cos_alpha: L, n: L) -> L {
     let n = clamp_n(n);
     let norm = (n + L::c(1.0)) * L::c(0.5 * core::f64::consts::FRAC_1_PI);
@@ -39,13 +46,16 @@ pub fn phong_lobe_pdf<L: Math>(cos_alpha: L, n: L) -> L {
     L::select(cos_alpha.gt(L::c(0.0)) & n.eq(n), p, L::c(0.0))
 }
 
-/// Inverse: u₀ = cos^{n+1}α = exp((n+1)·ln(1 − t)) with t = 1 − cos α taken from x² + y², so
-/// directions near the axis keep their precision.
-#[inline(always)]
-pub fn phong_lobe_inverse<L: Math>(w: V3<L>, n: L) -> V2<L> {
+/// Inverse of [`phong_lobe`]: u₀ = cos^{n+1}α = exp((n+1)·ln(1 − t)) with t = 1 − cos α taken
+/// from x² + y², so directions near the axis keep their precision; u₁ = azimuth/2π. Below the
+/// horizon u₀ = 0. NaN gives NaN.
+#[inline]
+pub fn phong_lobe_inverse<P: Point3<Lane = L>, L: Math>(w: P, n: L) -> P::Vec2 {
+    let w = w.to_lanes();
     let n = clamp_n(n);
     let t = one_minus_z(w);
     let u0 = ((n + L::c(1.0)) * (-t).ln_1p()).exp();
     let u0 = L::select(w.z.gt(L::c(0.0)), u0.min(L::c(1.0)), L::c(0.0));
-    V2::new(u0, azimuth_fraction(w.x, w.y)).nan_where(w.any_nan() | n.is_nan())
+    let u = V2::new(u0, azimuth_fraction(w.x, w.y));
+    Point2::from_lanes(u.nan_where(w.any_nan() | n.is_nan()))
 }

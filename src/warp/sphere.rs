@@ -2,30 +2,37 @@
 
 use crate::lane::{V2, V3};
 use crate::math::Math;
-use crate::warp::common::{azimuth_fraction, clamp_u};
+use crate::point::{Point2, Point3};
+use crate::warp::common::{azimuth_fraction, clamp_u, one_minus_z};
 
-/// z = 1 − 2u₀, r = 2√(u₀(1 − u₀)), φ = 2πu₁. The product form keeps r right near the poles:
-/// at u₀ = 1e-8, √(1 − z²) gives 0 where the true radius is 2e-4.
-#[inline(always)]
-pub fn uniform_sphere<L: Math>(u: V2<L>) -> V3<L> {
-    let u = clamp_u(u);
+/// Square → unit sphere, uniform (pdf 1/(4π) per steradian, [`uniform_sphere_pdf`]).
+///
+/// z = 1 − 2u₀, r = 2√(u₀(1 − u₀)), φ = 2πu₁. The product form keeps r right near the poles: at
+/// u₀ = 1e-8, √(1 − z²) gives 0 where the true radius is 2e-4. u is clamped to [0, 1]²; NaN
+/// gives NaN.
+#[inline]
+pub fn uniform_sphere<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
+    let u = clamp_u(u.to_lanes());
     let z = u.x.mul_add(L::c(-2.0), L::c(1.0));
     let r = L::c(2.0) * (u.x * (L::c(1.0) - u.x)).max(L::c(0.0)).sqrt();
     let (s, c) = u.y.sincos_2pi();
-    V3::new(r * c, r * s, z).nan_where(u.any_nan())
+    Point3::from_lanes(V3::new(r * c, r * s, z).nan_where(u.any_nan()))
 }
 
-#[inline(always)]
-pub fn uniform_sphere_pdf<L: Math>() -> L {
-    L::c(0.25 * core::f64::consts::FRAC_1_PI)
+/// pdf per steradian of [`uniform_sphere`] at direction `w`: 1/(4π), and 0 for NaN in any
+/// component.
+#[inline]
+pub fn uniform_sphere_pdf<P: Point3<Lane = L>, L: Math>(w: P) -> L {
+    let nan = w.to_lanes().any_nan();
+    L::select(nan, L::c(0.0), L::c(0.25 * core::f64::consts::FRAC_1_PI))
 }
 
-/// Inverse: u₀ = (1 − z)/2, with 1 − z computed as (x² + y²)/(1 + z) in the upper half, where
-/// the subtraction would cancel.
-#[inline(always)]
-pub fn uniform_sphere_inverse<L: Math>(w: V3<L>) -> V2<L> {
-    let rho2 = w.x.mul_add(w.x, w.y * w.y);
-    let one_minus_z = L::select(w.z.gt(L::c(0.0)), rho2 / (L::c(1.0) + w.z), L::c(1.0) - w.z);
-    let u0 = (one_minus_z * L::c(0.5)).clamp(L::c(0.0), L::c(1.0));
-    V2::new(u0, azimuth_fraction(w.x, w.y)).nan_where(w.any_nan())
+/// Inverse of [`uniform_sphere`] for a unit direction, in [0, 1] × [0, 1): u₀ = (1 − z)/2, with
+/// 1 − z computed as (x² + y²)/(1 + z) in the upper half, where the subtraction would cancel.
+/// NaN gives NaN.
+#[inline]
+pub fn uniform_sphere_inverse<P: Point3<Lane = L>, L: Math>(w: P) -> P::Vec2 {
+    let w = w.to_lanes();
+    let u0 = (one_minus_z(w) * L::c(0.5)).clamp(L::c(0.0), L::c(1.0));
+    Point2::from_lanes(V2::new(u0, azimuth_fraction(w.x, w.y)).nan_where(w.any_nan()))
 }

@@ -7,6 +7,7 @@
 
 use crate::lane::{V2, V3};
 use crate::math::Math;
+use crate::point::{Point2, Point3};
 use crate::warp::common::clamp_u;
 use crate::warp::polygon::{area_pdf_solid_angle, inside_polygon, vos_solid_angle};
 
@@ -164,17 +165,32 @@ fn pdf_of<L: Math>(s: &Setup<L>, w: V3<L>) -> L {
 
 /// Ureña's map alone, with no area fallback and no validity checks, as a point: for measuring
 /// where spherical sampling breaks down. Use [`spherical_rectangle`] to sample.
-#[inline(always)]
-pub fn urena_rectangle<L: Math>(u: V2<L>, corner: V3<L>, ex: V3<L>, ey: V3<L>) -> V3<L> {
-    let s = setup(corner, ex, ey);
-    let (xu, yv) = urena(&s, clamp_u(u));
-    corner + s.xh.scale(xu - s.x0) + s.yh.scale(yv - s.y0)
+#[inline]
+pub fn urena_rectangle<P: Point2>(u: P, corner: P::Vec3, ex: P::Vec3, ey: P::Vec3) -> P::Vec3 {
+    let corner = corner.to_lanes();
+    let s = setup(corner, ex.to_lanes(), ey.to_lanes());
+    let (xu, yv) = urena(&s, clamp_u(u.to_lanes()));
+    Point3::from_lanes(corner + s.xh.scale(xu - s.x0) + s.yh.scale(yv - s.y0))
 }
 
-/// A point on the rectangle and its pdf per steradian. See the public face for the contract.
-#[inline(always)]
-pub fn spherical_rectangle<L: Math>(u: V2<L>, corner: V3<L>, ex: V3<L>, ey: V3<L>) -> (V3<L>, L) {
-    let u = clamp_u(u);
+/// A point on the rectangle corner + s·ex + t·ey (relative to the shading point; ex ⟂ ey) and its
+/// pdf per steradian ([`spherical_rectangle_pdf`] gives the same number).
+///
+/// Ureña et al.'s map (2013), uniform in solid angle with pdf 1/Ω, Ω by Van Oosterom–Strackee.
+/// Below [`SPHERICAL_RECTANGLE_MIN_SR`] or above [`SPHERICAL_RECTANGLE_MAX_SR`] it samples by
+/// area and returns the exact converted pdf.
+///
+/// u is clamped to [0, 1]². Seen edge-on (the shading point within 1e-6 rad of the plane), or
+/// degenerate, the pdf is 0 and the point is `corner`. NaN in u gives pdf 0.
+#[inline]
+pub fn spherical_rectangle<P: Point2<Lane = L>, L: Math>(
+    u: P,
+    corner: P::Vec3,
+    ex: P::Vec3,
+    ey: P::Vec3,
+) -> (P::Vec3, L) {
+    let u = clamp_u(u.to_lanes());
+    let (corner, ex, ey) = (corner.to_lanes(), ex.to_lanes(), ey.to_lanes());
     let s = setup(corner, ex, ey);
     let (xu, yv) = urena(&s, u);
     // Offsets from the corner keep the point on the plane even when the rectangle is far away.
@@ -184,30 +200,43 @@ pub fn spherical_rectangle<L: Math>(u: V2<L>, corner: V3<L>, ex: V3<L>, ey: V3<L
     let pdf = pdf_of(&s, p.normalize());
     let ok = s.valid & p.dot(p).is_finite();
     let p = V3::select(ok, p, corner);
-    (p, L::select(ok, pdf, L::c(0.0)))
+    (Point3::from_lanes(p), L::select(ok, pdf, L::c(0.0)))
 }
 
-/// pdf per steradian that [`spherical_rectangle`] returns a point in direction `w` (unit); 0 when
-/// `w` misses the rectangle.
-#[inline(always)]
-pub fn spherical_rectangle_pdf<L: Math>(w: V3<L>, corner: V3<L>, ex: V3<L>, ey: V3<L>) -> L {
+/// pdf per steradian that [`spherical_rectangle`] returns a point in unit direction `w`; 0 when
+/// `w` misses the rectangle, for a degenerate one and for NaN.
+#[inline]
+pub fn spherical_rectangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, corner: P, ex: P, ey: P) -> L {
+    let (w, corner, ex, ey) = (
+        w.to_lanes(),
+        corner.to_lanes(),
+        ex.to_lanes(),
+        ey.to_lanes(),
+    );
     let s = setup(corner, ex, ey);
     let quad = [corner, corner + ex, corner + ex + ey, corner + ey];
     let inside = inside_polygon(w, quad, [ex, ey, -ex, -ey], corner.dot(ex.cross(ey)));
     L::select(s.valid & inside, pdf_of(&s, w), L::c(0.0))
 }
 
-/// The u that [`spherical_rectangle`] maps to point `p` of the rectangle.
+/// Inverse of [`spherical_rectangle`]: the u that maps to point `p` of the rectangle, in
+/// [0, 1]².
 ///
 /// Spherically: u₀ is the solid angle of the slab [x0, x] over the whole, u₁ the fraction of the
-/// elevation sine h between the slab's bottom and top edges. By area: p's (s, t).
-#[inline(always)]
-pub fn spherical_rectangle_inverse<L: Math>(
-    p: V3<L>,
-    corner: V3<L>,
-    ex: V3<L>,
-    ey: V3<L>,
-) -> V2<L> {
+/// elevation sine h between the slab's bottom and top edges. By area: p's (s, t). NaN gives NaN.
+#[inline]
+pub fn spherical_rectangle_inverse<P: Point3<Lane = L>, L: Math>(
+    p: P,
+    corner: P,
+    ex: P,
+    ey: P,
+) -> P::Vec2 {
+    let (p, corner, ex, ey) = (
+        p.to_lanes(),
+        corner.to_lanes(),
+        ex.to_lanes(),
+        ey.to_lanes(),
+    );
     let s = setup(corner, ex, ey);
     let d = p - corner;
     let st = V2::new(d.dot(s.ex) / s.ex.dot(s.ex), d.dot(s.ey) / s.ey.dot(s.ey));
@@ -218,5 +247,5 @@ pub fn spherical_rectangle_inverse<L: Math>(
     let h0 = elevation(s.y0, dist);
     let h1 = elevation(s.y1, dist);
     let u1 = (elevation(y, dist) - h0) / (h1 - h0);
-    clamp_u(V2::select(s.by_area, st, V2::new(u0, u1))).nan_where(p.any_nan())
+    Point2::from_lanes(clamp_u(V2::select(s.by_area, st, V2::new(u0, u1))).nan_where(p.any_nan()))
 }

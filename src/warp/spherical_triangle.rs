@@ -6,6 +6,7 @@
 
 use crate::lane::{V2, V3};
 use crate::math::Math;
+use crate::point::{Point2, Point3};
 use crate::warp::common::clamp_u;
 use crate::warp::polygon::{area_pdf_solid_angle, inside_polygon, vos_solid_angle};
 use crate::warp::triangle::{uniform_triangle, uniform_triangle_inverse};
@@ -169,15 +170,31 @@ fn barycentrics<L: Math>(w: V3<L>, a: V3<L>, b: V3<L>, c: V3<L>, n: V3<L>) -> (V
 
 /// Arvo's map alone, with no area fallback and no validity checks: for measuring where spherical
 /// sampling breaks down (the report's stability table). Use [`spherical_triangle`] to sample.
-#[inline(always)]
-pub fn arvo_triangle<L: Math>(u: V2<L>, a: V3<L>, b: V3<L>, c: V3<L>) -> V3<L> {
-    arvo(&setup(a, b, c), clamp_u(u))
+#[inline]
+pub fn arvo_triangle<P: Point2>(u: P, a: P::Vec3, b: P::Vec3, c: P::Vec3) -> P::Vec3 {
+    let s = setup(a.to_lanes(), b.to_lanes(), c.to_lanes());
+    Point3::from_lanes(arvo(&s, clamp_u(u.to_lanes())))
 }
 
-/// Direction towards (a, b, c) and its pdf per steradian. See the public face for the contract.
-#[inline(always)]
-pub fn spherical_triangle<L: Math>(u: V2<L>, a: V3<L>, b: V3<L>, c: V3<L>) -> (V3<L>, L) {
-    let u = clamp_u(u);
+/// A direction towards triangle (a, b, c), vertices relative to the shading point in either
+/// winding, and its pdf per steradian ([`spherical_triangle_pdf`] gives the same number).
+///
+/// Arvo's map (1995), uniform in solid angle with pdf 1/Ω, Ω by Van Oosterom–Strackee on edge
+/// vectors. Below [`SPHERICAL_TRIANGLE_MIN_SR`] or above [`SPHERICAL_TRIANGLE_MAX_SR`] it
+/// samples by area instead and returns the exact converted pdf.
+///
+/// u is clamped to [0, 1]². Degenerate triangles (coincident or collinear vertices, the shading
+/// point within 1e-6 rad of the triangle's plane, non-finite input) give pdf 0 and direction +z.
+/// NaN in u gives pdf 0.
+#[inline]
+pub fn spherical_triangle<P: Point2<Lane = L>, L: Math>(
+    u: P,
+    a: P::Vec3,
+    b: P::Vec3,
+    c: P::Vec3,
+) -> (P::Vec3, L) {
+    let u = clamp_u(u.to_lanes());
+    let (a, b, c) = (a.to_lanes(), b.to_lanes(), c.to_lanes());
     let s = setup(a, b, c);
     let w_sph = arvo(&s, u);
     let bary = uniform_triangle(u);
@@ -187,7 +204,7 @@ pub fn spherical_triangle<L: Math>(u: V2<L>, a: V3<L>, b: V3<L>, c: V3<L>) -> (V
     let pdf = pdf_of(&s, w);
     let ok = s.valid & w.dot(w).is_finite();
     let w = V3::select(ok, w, V3::new(L::c(0.0), L::c(0.0), L::c(1.0)));
-    (w, L::select(ok, pdf, L::c(0.0)))
+    (Point3::from_lanes(w), L::select(ok, pdf, L::c(0.0)))
 }
 
 /// The pdf of direction `w` given a set-up triangle, without the inside test: 1/Ω when sampled
@@ -199,21 +216,25 @@ fn pdf_of<L: Math>(s: &Setup<L>, w: V3<L>) -> L {
     L::select(s.by_area, area, sph)
 }
 
-/// pdf per steradian that [`spherical_triangle`] returns `w` (unit): 0 outside the triangle.
-#[inline(always)]
-pub fn spherical_triangle_pdf<L: Math>(w: V3<L>, a: V3<L>, b: V3<L>, c: V3<L>) -> L {
+/// pdf per steradian that [`spherical_triangle`] returns unit direction `w`: the same formula,
+/// hence the same number, as the sampler's; 0 outside the triangle, for degenerate triangles
+/// and for NaN.
+#[inline]
+pub fn spherical_triangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P, c: P) -> L {
+    let (w, a, b, c) = (w.to_lanes(), a.to_lanes(), b.to_lanes(), c.to_lanes());
     let s = setup(a, b, c);
     let inside = inside_polygon(w, [a, b, c], [b - a, c - b, a - c], a.dot(s.n));
     L::select(s.valid & inside, pdf_of(&s, w), L::c(0.0))
 }
 
-/// The u that [`spherical_triangle`] maps to direction `w`.
+/// Inverse of [`spherical_triangle`]: the u that maps to unit direction `w`, clamped to [0, 1]².
 ///
 /// Spherically: Ĉ is where the great circle through B and w meets the arc AC; u₁ is the fraction
 /// of the arc B Ĉ covered, |w − B|²/|Ĉ − B|², and u₀ the area of A B Ĉ over Ω. By area: the
-/// low-distortion triangle inverse of w's barycentrics.
-#[inline(always)]
-pub fn spherical_triangle_inverse<L: Math>(w: V3<L>, a: V3<L>, b: V3<L>, c: V3<L>) -> V2<L> {
+/// low-distortion triangle inverse of w's barycentrics. NaN gives NaN.
+#[inline]
+pub fn spherical_triangle_inverse<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P, c: P) -> P::Vec2 {
+    let (w, a, b, c) = (w.to_lanes(), a.to_lanes(), b.to_lanes(), c.to_lanes());
     let s = setup(a, b, c);
     let (bary, _) = barycentrics(w, a, b, c, s.n);
     let u_area = uniform_triangle_inverse(bary);
@@ -245,5 +266,5 @@ pub fn spherical_triangle_inverse<L: Math>(w: V3<L>, a: V3<L>, b: V3<L>, c: V3<L
         L::select(at_b, L::c(0.0), u0),
         L::select(at_b, L::c(0.0), u1),
     );
-    clamp_u(V2::select(s.by_area, u_area, u_sph)).nan_where(w.any_nan())
+    Point2::from_lanes(clamp_u(V2::select(s.by_area, u_area, u_sph)).nan_where(w.any_nan()))
 }

@@ -3,8 +3,11 @@
 use crate::math::Math;
 use crate::warp::common::clamp01;
 
-/// Each half inverted on its own: u < ½ gives x = √(2u) − 1, otherwise x = 1 − √(2(1 − u)).
-#[inline(always)]
+/// [0, 1) → [−1, 1] with pdf 1 − |x| (the tent pixel filter, [`tent_pdf`]), by inverting each
+/// half on its own: u < ½ gives x = √(2u) − 1, otherwise x = 1 − √(2(1 − u)).
+///
+/// u is clamped to [0, 1]; NaN gives NaN.
+#[inline]
 pub fn tent<L: Math>(u: L) -> L {
     let u = clamp01(u);
     let left = u.lt(L::c(0.5));
@@ -13,15 +16,16 @@ pub fn tent<L: Math>(u: L) -> L {
     L::select(left, -x, x).canon()
 }
 
-/// 1 − |x| on [−1, 1], else 0 (NaN gives 0).
-#[inline(always)]
+/// pdf of [`tent`]: 1 − |x| on [−1, 1], else 0 (also for NaN).
+#[inline]
 pub fn tent_pdf<L: Math>(x: L) -> L {
     let p = L::c(1.0) - x.abs();
     L::select(p.gt(L::c(0.0)), p, L::c(0.0))
 }
 
-/// Inverse: u = (1 + x)²/2 for x < 0, else 1 − (1 − x)²/2. x is clamped to [−1, 1].
-#[inline(always)]
+/// Inverse of [`tent`]: u = (1 + x)²/2 for x < 0, else 1 − (1 − x)²/2. x is clamped to [−1, 1];
+/// NaN gives NaN.
+#[inline]
 pub fn tent_inverse<L: Math>(x: L) -> L {
     let x = x.clamp(L::c(-1.0), L::c(1.0));
     let d = L::c(1.0) - x.abs();

@@ -48,6 +48,7 @@
 #[cfg(feature = "std")]
 extern crate std;
 
+pub mod camera;
 pub mod frame;
 pub mod lane;
 pub mod math;

@@ -1,11 +1,13 @@
 //! The 32-bit integer lane, `u32` and [`U32x8`]: the bits of the float lanes, and what the
 //! sequence generators are written over.
 
+use core::fmt::Debug;
 use core::ops::{Add, BitAnd, BitOr, Sub};
 
 use wide::{bytemuck, i32x8};
 
 use super::float::{F32x8, Lane};
+use super::vector::V2;
 
 /// Eight u32 lanes (`wide::u32x8`), the bits of an [`F32x8`]. Re-exported as
 /// [`crate::x8::U32x8`].
@@ -29,6 +31,9 @@ pub trait U32Lane:
 {
     /// The float lane of the same width.
     type F: Lane;
+    /// The public 2D vector of the same width: [`glam::Vec2`] for `u32`,
+    /// [`Vec2x8`](crate::x8::Vec2x8) for [`U32x8`]. Two-dimensional generators return it.
+    type Vec2: Copy + Debug + PartialEq + Default + From<V2<Self::F>>;
     /// Every lane equal to `x`.
     fn splat(x: u32) -> Self;
     /// Lane-wise `a + b` mod 2³².
@@ -75,6 +80,7 @@ pub trait U32Lane:
 
 impl U32Lane for u32 {
     type F = f32;
+    type Vec2 = glam::Vec2;
     #[inline(always)]
     fn splat(x: u32) -> Self {
         x
@@ -152,6 +158,7 @@ impl U32Lane for u32 {
 
 impl U32Lane for U32x8 {
     type F = F32x8;
+    type Vec2 = V2<F32x8>;
     #[inline(always)]
     fn splat(x: u32) -> Self {
         U32x8::splat(x)

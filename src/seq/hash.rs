@@ -1,4 +1,4 @@
-//! The counter-based hash behind [`independent`](super::independent).
+//! The counter-based hash of `(index, dim, seed)`, and the independent stream it gives.
 
 use crate::lane::U32Lane;
 
@@ -29,12 +29,6 @@ fn keys(dim: u32, seed: u32) -> (u32, u32) {
     (k1, k2)
 }
 
-/// Generic body of [`hash3`].
-#[inline(always)]
-pub(crate) fn hash3_lane<U: U32Lane>(index: U, dim: u32, seed: u32) -> U {
-    hash_keyed(index, keys(dim, seed))
-}
-
 /// A 32-bit hash of `(index, dim, seed)` with full avalanche, and a bijection of `index` for a
 /// fixed `(dim, seed)`.
 ///
@@ -43,13 +37,23 @@ pub(crate) fn hash3_lane<U: U32Lane>(index: U, dim: u32, seed: u32) -> U {
 /// (wrapping `+`). `lowbias32` is Wellons's two-round finaliser; two rounds on the index make
 /// every input bit affect every output bit with probability close to ½.
 #[inline]
-pub fn hash3(index: u32, dim: u32, seed: u32) -> u32 {
-    hash3_lane(index, dim, seed)
+pub fn hash3<I: U32Lane>(index: I, dim: u32, seed: u32) -> I {
+    hash_keyed(index, keys(dim, seed))
+}
+
+/// The `index`-th value of the independent uniform stream `(dim, seed)`: [`hash3`]`(index, dim,
+/// seed)` as a 24-bit float in [0, 1).
+///
+/// Distinct indices give distinct values of the 32-bit hash (it is a bijection of `index` for a
+/// fixed `(dim, seed)`), so the 24-bit outputs repeat only where 256 hashes share their top bits.
+#[inline]
+pub fn independent<I: U32Lane>(index: I, dim: u32, seed: u32) -> I::F {
+    hash3(index, dim, seed).to_unit_f32()
 }
 
 /// The keys of an internal stream: the keys of `(dim, seed)` mixed with a `tag`, so that the
 /// generators' permutation and jitter streams are unrelated to each other and to
-/// [`independent`](super::independent)'s stream of the same `(dim, seed)`.
+/// [`independent`]'s stream of the same `(dim, seed)`.
 #[inline(always)]
 pub(crate) fn tagged_keys(dim: u32, seed: u32, tag: u32) -> (u32, u32) {
     let (k1, _) = keys(dim, seed);

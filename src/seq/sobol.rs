@@ -22,7 +22,7 @@
 //! 0 and 1 (van der Corput and Pascal) need no matrix loop at all; 2 and 3 take 32 column steps.
 
 use super::hash::lowbias32;
-use crate::lane::U32Lane;
+use crate::lane::{U32Lane, V2};
 
 /// Joe–Kuo ("Constructing Sobol sequences with better two-dimensional projections", SIAM J. Sci.
 /// Comput. 30, 2008; file new-joe-kuo-6.21201) parameters of their dimensions 2, 3 and 4: degree
@@ -142,6 +142,24 @@ pub(crate) fn sobol_bits<U: U32Lane>(index: U, dim: u32, seed: u32) -> U {
         }
     };
     scramble_reversed(reversed_value, value_seed).reverse_bits()
+}
+
+/// Owen-scrambled Sobol (Burley 2020): dimension `dim` of point `index`, for `seed`.
+///
+/// Dimensions 0 and 1 of one seed form a (0, m, 2)-net for every prefix of N = 2ᵐ indices, and
+/// every dimension alone is one point per 1/N stratum for such N. Dimensions go in sets of four
+/// with independent seeds (padding), so any `dim` works. The module notes above give the
+/// construction.
+#[inline]
+pub fn sobol<I: U32Lane>(index: I, dim: u32, seed: u32) -> I::F {
+    sobol_bits(index, dim, seed).to_unit_f32()
+}
+
+/// Dimensions 2·`dim` and 2·`dim` + 1 of [`sobol`]: `sobol_2d(i, 0, seed)` is the net.
+#[inline]
+pub fn sobol_2d<I: U32Lane>(index: I, dim: u32, seed: u32) -> I::Vec2 {
+    let d = dim.wrapping_mul(2);
+    V2::new(sobol(index, d, seed), sobol(index, d.wrapping_add(1), seed)).into()
 }
 
 #[cfg(test)]

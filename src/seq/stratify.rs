@@ -11,7 +11,7 @@
 //!   [s/n, (s+1)/n) exactly, not just up to rounding.
 
 use super::hash::{hash_keyed, tagged_keys};
-use crate::lane::U32Lane;
+use crate::lane::{U32Lane, V2};
 
 /// The most strata one axis resolves: above 2²³, strata are narrower than the spacing of f32 near
 /// 1 (2⁻²⁴), so one point per stratum can no longer be represented. Larger counts are clamped.
@@ -96,10 +96,16 @@ fn round<U: U32Lane>(index: U, n: u32, dim: u32, seed: u32) -> (U, U) {
     (j, hash_keyed(r, tagged_keys(dim, seed, TAG_ORDER)))
 }
 
-/// Generic body of [`stratified`](super::stratified) and
-/// [`latin_hypercube`](super::latin_hypercube).
-#[inline(always)]
-pub(crate) fn stratified<U: U32Lane>(index: U, count: u32, dim: u32, seed: u32) -> U::F {
+/// One point of a stratified set of `count` strata of [0, 1): index i lands in stratum
+/// π(i mod count), π a hashed permutation of the round ⌊i/count⌋ and of `(dim, seed)`, with a
+/// hashed jitter inside it.
+///
+/// Each dimension has its own permutation, so reading several dimensions of the same indices gives
+/// a Latin hypercube ([`latin_hypercube`] is this function under the name of that property).
+/// `count` is clamped to [1, [`MAX_STRATA`]]; every index, including 2³² − 1, gives a value in
+/// [0, 1).
+#[inline]
+pub fn stratified<I: U32Lane>(index: I, count: u32, dim: u32, seed: u32) -> I::F {
     let n = count.clamp(1, MAX_STRATA);
     let (j, key) = round(index, n, dim, seed);
     let s = permute(j, n, key);
@@ -138,27 +144,53 @@ fn place<U: U32Lane>(
     (sy, ny): (U, u32),
     dim: u32,
     seed: u32,
-) -> (U::F, U::F) {
+) -> U::Vec2 {
     let x = in_stratum(sx, nx, jitter(index, dim, seed, TAG_JITTER_X));
     let y = in_stratum(sy, ny, jitter(index, dim, seed, TAG_JITTER_Y));
-    (x, y)
+    V2::new(x, y).into()
 }
 
-/// Generic body of [`jittered_2d`](super::jittered_2d).
-#[inline(always)]
-pub(crate) fn jittered_2d<U: U32Lane>(
-    index: U,
-    nx: u32,
-    ny: u32,
-    dim: u32,
-    seed: u32,
-) -> (U::F, U::F) {
+/// One point of a Latin hypercube of `count` points: dimension `dim` of point `index`. Every
+/// dimension is stratified into `count` strata, each visited once per round of `count` indices,
+/// with independent permutations per dimension. The same function as [`stratified`].
+#[inline]
+pub fn latin_hypercube<I: U32Lane>(index: I, count: u32, dim: u32, seed: u32) -> I::F {
+    stratified(index, count, dim, seed)
+}
+
+/// One point of a jittered nx × ny grid: index i visits cell π(i mod nx·ny), π a hashed
+/// permutation of the round and of `(dim, seed)`, at a hashed position inside it.
+///
+/// `dim` numbers dimension pairs. nx is clamped to [1, 2²³] and ny to [1, 2²³/nx].
+#[inline]
+pub fn jittered_2d<I: U32Lane>(index: I, nx: u32, ny: u32, dim: u32, seed: u32) -> I::Vec2 {
     let (column, row, _, nx, ny) = cell(index, nx, ny, dim, seed);
     place(index, (column, nx), (row, ny), dim, seed)
 }
 
-/// Generic body of [`multi_jittered_2d`](super::multi_jittered_2d) (`correlated = false`) and
-/// [`cmj_2d`](super::cmj_2d) (`correlated = true`).
+/// One point of a multi-jittered set of nx·ny points (Chiu, Shirley and Wang 1994): jittered on
+/// the nx × ny grid, and x and y each one point per 1/(nx·ny) stratum. The fine strata are
+/// shuffled by an independent permutation per column and per row, so x and y do not share a
+/// pattern.
+///
+/// `dim` numbers dimension pairs; the grid is clamped as in [`jittered_2d`].
+#[inline]
+pub fn multi_jittered_2d<I: U32Lane>(index: I, nx: u32, ny: u32, dim: u32, seed: u32) -> I::Vec2 {
+    multi_jitter(index, nx, ny, dim, seed, false)
+}
+
+/// Kensler's correlated multi-jitter (Pixar Technical Memo 13-01, 2013): the structure of
+/// [`multi_jittered_2d`], but every column shares one permutation and every row another.
+///
+/// That makes a cell's fine x-offset a function of its row alone, so the x–y interaction is not
+/// stratified: on smooth 2D integrands it converges more slowly than [`multi_jittered_2d`] at
+/// large N (the report measures both). Kept because it is the well-known, widely used form.
+#[inline]
+pub fn cmj_2d<I: U32Lane>(index: I, nx: u32, ny: u32, dim: u32, seed: u32) -> I::Vec2 {
+    multi_jitter(index, nx, ny, dim, seed, true)
+}
+
+/// The body of [`multi_jittered_2d`] (`correlated = false`) and [`cmj_2d`] (`correlated = true`).
 ///
 /// Cell (c, r) of the nx × ny grid takes x-sub-stratum c·ny + π_c(r) and y-sub-stratum
 /// r·nx + ρ_r(c) of the n = nx·ny fine strata, where π_c permutes [0, ny) and ρ_r permutes [0, nx):
@@ -166,14 +198,14 @@ pub(crate) fn jittered_2d<U: U32Lane>(
 /// stratum and one per column, and likewise for y. Multi-jitter draws π_c for every column and ρ_r
 /// for every row independently; correlated multi-jitter (Kensler) uses one π and one ρ per set.
 #[inline(always)]
-pub(crate) fn multi_jittered_2d<U: U32Lane>(
+fn multi_jitter<U: U32Lane>(
     index: U,
     nx: u32,
     ny: u32,
     dim: u32,
     seed: u32,
     correlated: bool,
-) -> (U::F, U::F) {
+) -> U::Vec2 {
     let (column, row, key, nx, ny) = cell(index, nx, ny, dim, seed);
     let (column_key, row_key) = if correlated {
         (key, key)

@@ -6,29 +6,44 @@
 //!
 //! # Map
 //!
-//! The modules follow the data flow, and each depends only on those before it:
+//! The modules follow the data flow. Each imports only from the floors below its own (and from
+//! core, glam, wide and libm); nothing points back up.
 //!
-//! | module | role |
-//! |---|---|
-//! | [`lane`] | the [`Lane`](lane::Lane) trait (arithmetic, masks, selects) over `f32`, [`F32x8`](x8::F32x8) and `f64`, and the generic vectors [`V2`](lane::V2), [`V3`](lane::V3) |
-//! | [`math`] | the [`Math`](math::Math) trait: the crate's own transcendental functions for the f32 lanes, with their ulp bounds, and libm for f64 |
-//! | [`x8`] | the public packet types |
-//! | [`frame`] | orthonormal frames from a normal |
-//! | [`warp`] | square → disk, hemisphere, sphere, cone, Phong lobe, triangle, spherical triangle and rectangle, tent |
-//! | [`rng`] | `Pcg32x8`: eight PCG32 streams, lane *i* equal to `rand_pcg::Pcg32` |
-//! | [`seq`] | stateless generators of (index, dimension, seed), and point-set quality measures |
-//! | [`verify`] | (std) χ² goodness of fit and the packet-vs-scalar lane check |
+//! | floor | module | role | may import |
+//! |---|---|---|---|
+//! | 1 | [`lane`] | the [`Lane`](lane::Lane) traits (arithmetic, masks, selects, bits) over `f32`, [`F32x8`](x8::F32x8) and `f64`, the integer lane [`U32Lane`](lane::U32Lane), and the generic vectors [`V2`](lane::V2), [`V3`](lane::V3) | — |
+//! | 2 | [`math`] | [`Math`](math::Math): the crate's own transcendental functions, with their ulp bounds, and libm for f64 | lane |
+//! | 2 | [`point`] | [`Point2`](point::Point2), [`Point3`](point::Point3): the argument type that picks a call's width | lane, math |
+//! | 2 | [`x8`] | the public packet types | lane |
+//! | 2 | [`rng`] | `Pcg32x8`: eight PCG32 streams, lane *i* equal to `rand_pcg::Pcg32` | lane |
+//! | 2 | [`seq`] | stateless generators of (index, dimension, seed), and point-set quality measures | lane |
+//! | 3 | [`frame`] | orthonormal frames from a normal | lane, math, point |
+//! | 3 | [`warp`] | square → disk, hemisphere, sphere, cone, Phong lobe, triangle, spherical triangle and rectangle, tent | lane, math, point |
+//! | 4 | [`camera`] | film, lens and time samples of a pixel | seq, warp |
+//! | 4 | `estimate`, `mis` (to come) | accumulators, roulette, splitting; MIS weights | lane only |
+//! | 4 | `reference` (to come) | analytic f64 irradiance references | core and libm only |
+//! | 5 | `scene` (to come) | lights and BSDFs | warp, frame |
+//! | 6 | `direct` (to come) | the direct-lighting estimator | scene, mis, estimate, seq |
+//! | — | [`verify`] | (std) χ² goodness of fit and the packet-vs-scalar lane check | anything below |
 //!
-//! # One source, two widths
+//! One deliberate exception: `seq` re-exports [`CameraSample`](camera::CameraSample) and
+//! [`PixelFilter`](camera::PixelFilter) from `camera`, because callers know them by the path
+//! `mcsample::seq::CameraSample`.
 //!
-//! Each algorithm is one generic function over [`Math`](math::Math) (a [`Lane`](lane::Lane) with
-//! transcendental functions). The scalar faces
-//! (`warp::cosine_hemisphere(Vec2) -> Vec3`) and the packet faces
-//! (`warp::x8::cosine_hemisphere(Vec2x8) -> Vec3x8`) instantiate it, and lane *i* of a packet
-//! result equals the scalar result on lane *i*'s input, bit for bit, in any one build: the
-//! operations the lanes use are correctly rounded or exact, FMA is fused in both widths or in
-//! neither, and NaN outputs are canonical. The `f64` instance, whose transcendental functions come
-//! from libm, is the reference the report measures f32 error against.
+//! # One source, every width
+//!
+//! Each algorithm is one public generic function, written over [`Math`](math::Math) (a
+//! [`Lane`](lane::Lane) with transcendental functions) and documented once. The type of its
+//! argument picks the width ([`point`]): `warp::cosine_hemisphere(Vec2) -> Vec3`,
+//! `warp::cosine_hemisphere(Vec2x8) -> Vec3x8`, and `warp::cosine_hemisphere(DVec2) -> DVec3`,
+//! the f64 reference whose transcendental functions come from libm and against which the report
+//! measures f32 error. Sequence generators do the same over the index lane (`u32` or `U32x8`).
+//! The `x8` modules (`warp::x8`, `seq::x8`, `frame::x8`, `camera::x8`) name the same functions
+//! and types under the packet path.
+//!
+//! Lane *i* of a packet result equals the scalar result on lane *i*'s input, bit for bit, in any
+//! one build: the operations the lanes use are correctly rounded or exact, FMA is fused in both
+//! widths or in neither, and NaN outputs are canonical.
 //!
 //! # Bad input
 //!
@@ -44,6 +59,7 @@
 
 #![no_std]
 #![forbid(unsafe_code)]
+#![warn(missing_docs)]
 
 #[cfg(feature = "std")]
 extern crate std;

@@ -70,10 +70,15 @@ pub trait Lane:
     /// The magnitude of `self` with the sign bit of `sign`.
     fn copysign(self, sign: Self) -> Self;
 
+    /// `self < o`, lane-wise (false where either is NaN, as are the other compares).
     fn lt(self, o: Self) -> Self::Mask;
+    /// `self ≤ o`, lane-wise.
     fn le(self, o: Self) -> Self::Mask;
+    /// `self > o`, lane-wise.
     fn gt(self, o: Self) -> Self::Mask;
+    /// `self ≥ o`, lane-wise.
     fn ge(self, o: Self) -> Self::Mask;
+    /// `self == o`, lane-wise.
     fn eq(self, o: Self) -> Self::Mask;
 
     /// Lane-wise `if m { a } else { b }`.

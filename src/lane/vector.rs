@@ -7,27 +7,35 @@ use super::float::Lane;
 /// A 2D vector whose components are lanes: `V2<f32>` is one point, `V2<F32x8>` eight.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct V2<L> {
+    /// The x components.
     pub x: L,
+    /// The y components.
     pub y: L,
 }
 
 /// A 3D vector whose components are lanes, stored as structure-of-arrays.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct V3<L> {
+    /// The x components.
     pub x: L,
+    /// The y components.
     pub y: L,
+    /// The z components.
     pub z: L,
 }
 
 impl<L: Lane> V2<L> {
+    /// The vector (x, y).
     #[inline(always)]
     pub fn new(x: L, y: L) -> Self {
         Self { x, y }
     }
+    /// x·o.x + y·o.y, with one [`Lane::mul_add`].
     #[inline(always)]
     pub fn dot(self, o: Self) -> L {
         self.x.mul_add(o.x, self.y * o.y)
     }
+    /// x² + y².
     #[inline(always)]
     pub fn length_squared(self) -> L {
         self.dot(self)
@@ -60,6 +68,7 @@ impl<L: Lane> V2<L> {
 }
 
 impl<L: Lane> V3<L> {
+    /// The vector (x, y, z).
     #[inline(always)]
     pub fn new(x: L, y: L, z: L) -> Self {
         Self { x, y, z }
@@ -69,10 +78,12 @@ impl<L: Lane> V3<L> {
     pub fn all(v: L) -> Self {
         Self::new(v, v, v)
     }
+    /// The dot product, with two [`Lane::mul_add`]s.
     #[inline(always)]
     pub fn dot(self, o: Self) -> L {
         self.x.mul_add(o.x, self.y.mul_add(o.y, self.z * o.z))
     }
+    /// The cross product, each component a product minus a product with one [`Lane::mul_add`].
     #[inline(always)]
     pub fn cross(self, o: Self) -> Self {
         Self::new(
@@ -81,10 +92,12 @@ impl<L: Lane> V3<L> {
             self.x.mul_add(o.y, -(self.y * o.x)),
         )
     }
+    /// |self|².
     #[inline(always)]
     pub fn length_squared(self) -> L {
         self.dot(self)
     }
+    /// |self|, a correctly rounded square root of [`length_squared`](Self::length_squared).
     #[inline(always)]
     pub fn length(self) -> L {
         self.dot(self).sqrt()
@@ -96,6 +109,7 @@ impl<L: Lane> V3<L> {
         let len = self.length();
         Self::new(self.x / len, self.y / len, self.z / len)
     }
+    /// Every component times `s`.
     #[inline(always)]
     pub fn scale(self, s: L) -> Self {
         Self::new(self.x * s, self.y * s, self.z * s)

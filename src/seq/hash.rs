@@ -36,7 +36,7 @@ fn keys(dim: u32, seed: u32) -> (u32, u32) {
 /// `k2 = lowbias32(k1 + 0x9e3779b9)`; the hash is `lowbias32(lowbias32(index ^ k1) + k2)`
 /// (wrapping `+`). `lowbias32` is Wellons's two-round finaliser; two rounds on the index make
 /// every input bit affect every output bit with probability close to ½.
-#[inline]
+#[inline(always)]
 pub fn hash3<I: U32Lane>(index: I, dim: u32, seed: u32) -> I {
     hash_keyed(index, keys(dim, seed))
 }
@@ -46,7 +46,7 @@ pub fn hash3<I: U32Lane>(index: I, dim: u32, seed: u32) -> I {
 ///
 /// Distinct indices give distinct values of the 32-bit hash (it is a bijection of `index` for a
 /// fixed `(dim, seed)`), so the 24-bit outputs repeat only where 256 hashes share their top bits.
-#[inline]
+#[inline(always)]
 pub fn independent<I: U32Lane>(index: I, dim: u32, seed: u32) -> I::F {
     hash3(index, dim, seed).to_unit_f32()
 }

@@ -150,13 +150,13 @@ pub(crate) fn sobol_bits<U: U32Lane>(index: U, dim: u32, seed: u32) -> U {
 /// every dimension alone is one point per 1/N stratum for such N. Dimensions go in sets of four
 /// with independent seeds (padding), so any `dim` works. The module notes above give the
 /// construction.
-#[inline]
+#[inline(always)]
 pub fn sobol<I: U32Lane>(index: I, dim: u32, seed: u32) -> I::F {
     sobol_bits(index, dim, seed).to_unit_f32()
 }
 
 /// Dimensions 2·`dim` and 2·`dim` + 1 of [`sobol`]: `sobol_2d(i, 0, seed)` is the net.
-#[inline]
+#[inline(always)]
 pub fn sobol_2d<I: U32Lane>(index: I, dim: u32, seed: u32) -> I::Vec2 {
     let d = dim.wrapping_mul(2);
     V2::new(sobol(index, d, seed), sobol(index, d.wrapping_add(1), seed)).into()

@@ -104,7 +104,7 @@ fn round<U: U32Lane>(index: U, n: u32, dim: u32, seed: u32) -> (U, U) {
 /// a Latin hypercube ([`latin_hypercube`] is this function under the name of that property).
 /// `count` is clamped to [1, [`MAX_STRATA`]]; every index, including 2³² − 1, gives a value in
 /// [0, 1).
-#[inline]
+#[inline(always)]
 pub fn stratified<I: U32Lane>(index: I, count: u32, dim: u32, seed: u32) -> I::F {
     let n = count.clamp(1, MAX_STRATA);
     let (j, key) = round(index, n, dim, seed);
@@ -153,7 +153,7 @@ fn place<U: U32Lane>(
 /// One point of a Latin hypercube of `count` points: dimension `dim` of point `index`. Every
 /// dimension is stratified into `count` strata, each visited once per round of `count` indices,
 /// with independent permutations per dimension. The same function as [`stratified`].
-#[inline]
+#[inline(always)]
 pub fn latin_hypercube<I: U32Lane>(index: I, count: u32, dim: u32, seed: u32) -> I::F {
     stratified(index, count, dim, seed)
 }
@@ -162,7 +162,7 @@ pub fn latin_hypercube<I: U32Lane>(index: I, count: u32, dim: u32, seed: u32) ->
 /// permutation of the round and of `(dim, seed)`, at a hashed position inside it.
 ///
 /// `dim` numbers dimension pairs. nx is clamped to [1, 2²³] and ny to [1, 2²³/nx].
-#[inline]
+#[inline(always)]
 pub fn jittered_2d<I: U32Lane>(index: I, nx: u32, ny: u32, dim: u32, seed: u32) -> I::Vec2 {
     let (column, row, _, nx, ny) = cell(index, nx, ny, dim, seed);
     place(index, (column, nx), (row, ny), dim, seed)
@@ -174,7 +174,7 @@ pub fn jittered_2d<I: U32Lane>(index: I, nx: u32, ny: u32, dim: u32, seed: u32) 
 /// pattern.
 ///
 /// `dim` numbers dimension pairs; the grid is clamped as in [`jittered_2d`].
-#[inline]
+#[inline(always)]
 pub fn multi_jittered_2d<I: U32Lane>(index: I, nx: u32, ny: u32, dim: u32, seed: u32) -> I::Vec2 {
     multi_jitter(index, nx, ny, dim, seed, false)
 }
@@ -185,7 +185,7 @@ pub fn multi_jittered_2d<I: U32Lane>(index: I, nx: u32, ny: u32, dim: u32, seed:
 /// That makes a cell's fine x-offset a function of its row alone, so the x–y interaction is not
 /// stratified: on smooth 2D integrands it converges more slowly than [`multi_jittered_2d`] at
 /// large N (the report measures both). Kept because it is the well-known, widely used form.
-#[inline]
+#[inline(always)]
 pub fn cmj_2d<I: U32Lane>(index: I, nx: u32, ny: u32, dim: u32, seed: u32) -> I::Vec2 {
     multi_jitter(index, nx, ny, dim, seed, true)
 }

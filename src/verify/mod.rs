@@ -97,6 +97,7 @@ mod chi2;
 mod gamma;
 mod lanes;
 mod planar;
+pub mod registry;
 
 pub use cap::Cap;
 pub use chi2::{ChiSquare, ChiSquareResult, Disk, Domain, ExpectedCounts, Sphere, Square};

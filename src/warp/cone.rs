@@ -15,14 +15,14 @@ const H_MAX: f64 = 2.0;
 ///
 /// Loses precision for narrow cones, where cos θmax rounds towards 1: prefer
 /// [`cone_h_from_sin2`] when sin²θmax is at hand.
-#[inline]
+#[inline(always)]
 pub fn cone_h_from_cos<L: Math>(cos_max: L) -> L {
     (L::c(1.0) - cos_max).clamp(L::c(0.0), L::c(H_MAX)).canon()
 }
 
 /// h = 1 − cos θmax from sin²θmax (θmax ≤ π/2), as s²/(1 + √(1 − s²)): exact algebra, with no
 /// cancellation at any size and no threshold. s² is clamped to [0, 1]; NaN gives NaN.
-#[inline]
+#[inline(always)]
 pub fn cone_h_from_sin2<L: Math>(sin2_max: L) -> L {
     let s2 = sin2_max.clamp(L::c(0.0), L::c(1.0));
     (s2 / (L::c(1.0) + (L::c(1.0) - s2).sqrt())).canon()
@@ -35,7 +35,7 @@ pub fn cone_h_from_sin2<L: Math>(sin2_max: L) -> L {
 /// the narrowest cones; φ = 2πu₁. Build h with [`cone_h_from_sin2`] or [`cone_h_from_cos`].
 /// u is clamped to [0, 1]² and h to [0, 2]; h = 0 puts every sample on the axis (pdf 0); NaN in u
 /// or h gives NaN.
-#[inline]
+#[inline(always)]
 pub fn uniform_cone<P: Point2<Lane = L>, L: Math>(u: P, h: L) -> P::Vec3 {
     let u = clamp_u(u.to_lanes());
     let h = h.clamp(L::c(0.0), L::c(H_MAX));
@@ -53,7 +53,7 @@ pub fn uniform_cone<P: Point2<Lane = L>, L: Math>(u: P, h: L) -> P::Vec3 {
 /// keeps its precision near the axis. The margin is a few ulp: every direction [`uniform_cone`]
 /// returns, including at u₀ = 1 and for h down to 1e-9, gets the non-zero pdf, and the pdf
 /// drops to 0 within a relative 1e-6 of the true boundary.
-#[inline]
+#[inline(always)]
 pub fn uniform_cone_pdf<P: Point3<Lane = L>, L: Math>(w: P, h: L) -> L {
     // NaN must reach the select below as NaN, so it goes in the second operand of min.
     let h = L::c(H_MAX).min(h);
@@ -67,7 +67,7 @@ pub fn uniform_cone_pdf<P: Point3<Lane = L>, L: Math>(w: P, h: L) -> L {
 
 /// Inverse of [`uniform_cone`]: u₀ = t/h with t = 1 − z = (x² + y²)/(1 + z) (no cancellation near
 /// the axis), clamped to [0, 1]; u₁ = azimuth/2π. NaN gives NaN.
-#[inline]
+#[inline(always)]
 pub fn uniform_cone_inverse<P: Point3<Lane = L>, L: Math>(w: P, h: L) -> P::Vec2 {
     let w = w.to_lanes();
     let u0 = (one_minus_z(w) / h).clamp(L::c(0.0), L::c(1.0));

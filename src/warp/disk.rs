@@ -37,7 +37,7 @@ pub(crate) fn concentric_with_one_minus_r<L: Math>(u: V2<L>) -> (V2<L>, L) {
 ///
 /// Concentric squares of u become concentric circles, so strata stay compact. u is clamped to
 /// [0, 1]²; (½, ½) ↦ (0, 0) exactly; NaN in either coordinate gives NaN in both.
-#[inline]
+#[inline(always)]
 pub fn concentric_disk<P: Point2>(u: P) -> P {
     let u = u.to_lanes();
     P::from_lanes(concentric_with_one_minus_r(u).0.nan_where(u.any_nan()))
@@ -48,7 +48,7 @@ pub fn concentric_disk<P: Point2>(u: P) -> P {
 /// The larger |coordinate| selects the wedge; atan of the ratio of the smaller to it gives t.
 /// p = 0 maps to (½, ½). Points outside the disk map as if radially scaled onto the square's
 /// boundary (clamped to [0, 1]²); NaN gives NaN.
-#[inline]
+#[inline(always)]
 pub fn concentric_disk_inverse<P: Point2<Lane = L>, L: Math>(p: P) -> P {
     let p = p.to_lanes();
     let x_major = p.x.abs().ge(p.y.abs());
@@ -71,7 +71,7 @@ pub fn concentric_disk_inverse<P: Point2<Lane = L>, L: Math>(p: P) -> P {
 /// Square → unit disk by the polar map r = √u₀, φ = 2πu₁ (area pdf 1/π, [`uniform_disk_pdf`]).
 ///
 /// u is clamped to [0, 1]²; NaN in either coordinate gives NaN in both.
-#[inline]
+#[inline(always)]
 pub fn polar_disk<P: Point2<Lane = L>, L: Math>(u: P) -> P {
     let u = clamp_u(u.to_lanes());
     let r = u.x.sqrt();
@@ -80,7 +80,7 @@ pub fn polar_disk<P: Point2<Lane = L>, L: Math>(u: P) -> P {
 }
 
 /// Inverse of [`polar_disk`]: u₀ = |p|², u₁ = azimuth/2π in [0, 1). NaN gives NaN.
-#[inline]
+#[inline(always)]
 pub fn polar_disk_inverse<P: Point2>(p: P) -> P {
     let p = p.to_lanes();
     P::from_lanes(V2::new(p.length_squared(), azimuth_fraction(p.x, p.y)).nan_where(p.any_nan()))
@@ -91,7 +91,7 @@ pub fn polar_disk_inverse<P: Point2>(p: P) -> P {
 ///
 /// "Inside" is |p|² ≤ 1 + 2⁻²⁰, so that rim points, whose rounded radius can exceed 1 by a few
 /// ulp, keep their pdf: every point either map returns gets 1/π.
-#[inline]
+#[inline(always)]
 pub fn uniform_disk_pdf<P: Point2<Lane = L>, L: Math>(p: P) -> L {
     let inside = p
         .to_lanes()

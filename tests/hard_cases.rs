@@ -21,36 +21,24 @@
 
 mod common;
 
+use std::rc::Rc;
+
 use common::*;
 use glam::{Vec2, Vec3};
 use mcsample::frame::Frame;
+use mcsample::verify::{Bits, LaneMismatch, Scalar, check_lanes};
 use mcsample::warp::{self, ONE_MINUS_EPS};
 use mcsample::x8::{F32x8, Vec2x8, Vec3x8};
 
+/// The scalar components of a result, in order (a direction and its pdf: x, y, z, pdf).
 type Out = Vec<f32>;
-type Lanes = Vec<[f32; 8]>;
 type Check = Box<dyn Fn(&[f32]) -> Result<(), String>>;
+/// `check_lanes` of a packet form against its scalar form, on the given inputs.
+type Lanes<S> = Box<dyn Fn(&[S]) -> Result<usize, Box<LaneMismatch>>>;
 
-fn o2(v: Vec2) -> Out {
-    vec![v.x, v.y]
-}
-fn o3(v: Vec3) -> Out {
-    vec![v.x, v.y, v.z]
-}
-fn o3p((v, p): (Vec3, f32)) -> Out {
-    vec![v.x, v.y, v.z, p]
-}
-fn l2(v: Vec2x8) -> Lanes {
-    vec![v.x.to_array(), v.y.to_array()]
-}
-fn l3(v: Vec3x8) -> Lanes {
-    vec![v.x.to_array(), v.y.to_array(), v.z.to_array()]
-}
-fn l3p((v, p): (Vec3x8, F32x8)) -> Lanes {
-    vec![v.x.to_array(), v.y.to_array(), v.z.to_array(), p.to_array()]
-}
-fn l1(v: F32x8) -> Lanes {
-    vec![v.to_array()]
+/// The components of `v`, bit for bit (NaN payloads included).
+fn flat(v: impl Bits) -> Out {
+    v.bits().into_iter().map(f32::from_bits).collect()
 }
 fn s3(v: Vec3) -> Vec3x8 {
     Vec3x8::splat(v)
@@ -62,22 +50,9 @@ fn dv3(v: Vec3) -> D3 {
     [v.x as f64, v.y as f64, v.z as f64]
 }
 
-/// Lane `i` of a packet result equals the scalar result bit for bit (NaN payloads included).
-fn same_bits(what: &str, s: &[f32], p: &[[f32; 8]], lane: usize) -> Result<(), String> {
-    if s.len() != p.len() {
-        return Err(format!("{what}: output arity {} vs {}", s.len(), p.len()));
-    }
-    for (k, (a, b)) in s.iter().zip(p).enumerate() {
-        if a.to_bits() != b[lane].to_bits() {
-            return Err(format!(
-                "{what}: output {k}: scalar {a:e} ({:#010x}) ≠ lane {lane} {:e} ({:#010x})",
-                a.to_bits(),
-                b[lane],
-                b[lane].to_bits()
-            ));
-        }
-    }
-    Ok(())
+/// A `check_lanes` result as a case's sub-result.
+fn same_lanes(what: &str, r: Result<usize, Box<LaneMismatch>>) -> Result<(), String> {
+    r.map(drop).map_err(|e| format!("{what}: {e}"))
 }
 
 /// Every NaN output is the canonical quiet NaN, bits 0x7fc0_0000 (crate docs, "Bad input").
@@ -114,11 +89,31 @@ fn unit(what: &str, v: &[f32]) -> Result<(), String> {
 
 struct Warp {
     name: String,
+    /// The scalar form, its result flattened.
     s: Box<dyn Fn(Vec2) -> Out>,
-    p: Box<dyn Fn(Vec2x8) -> Lanes>,
+    /// The packet form against the scalar form.
+    lanes: Lanes<Vec2>,
     domain: Check,
     /// The documented fixed output of a spherical polygon sampler at NaN u.
     fixed: Option<Vec3>,
+}
+
+fn warp_case<T: Scalar + 'static>(
+    name: impl Into<String>,
+    scalar: impl Fn(Vec2) -> T + 'static,
+    packet: impl Fn(Vec2x8) -> T::X8 + 'static,
+    domain: Check,
+    fixed: Option<Vec3>,
+) -> Warp {
+    let scalar = Rc::new(scalar);
+    let s = Rc::clone(&scalar);
+    Warp {
+        name: name.into(),
+        s: Box::new(move |u| flat(s(u))),
+        lanes: Box::new(move |us| check_lanes(us, &packet, &*scalar)),
+        domain,
+        fixed,
+    }
 }
 
 fn disk_domain() -> Check {
@@ -233,46 +228,46 @@ fn v(a: [f32; 3]) -> Vec3 {
 
 fn warps() -> Vec<Warp> {
     let mut w: Vec<Warp> = vec![
-        Warp {
-            name: "concentric_disk".into(),
-            s: Box::new(|u| o2(warp::concentric_disk(u))),
-            p: Box::new(|u| l2(warp::x8::concentric_disk(u))),
-            domain: disk_domain(),
-            fixed: None,
-        },
-        Warp {
-            name: "polar_disk".into(),
-            s: Box::new(|u| o2(warp::polar_disk(u))),
-            p: Box::new(|u| l2(warp::x8::polar_disk(u))),
-            domain: disk_domain(),
-            fixed: None,
-        },
-        Warp {
-            name: "uniform_hemisphere".into(),
-            s: Box::new(|u| o3(warp::uniform_hemisphere(u))),
-            p: Box::new(|u| l3(warp::x8::uniform_hemisphere(u))),
-            domain: dir_domain(0.0),
-            fixed: None,
-        },
-        Warp {
-            name: "cosine_hemisphere".into(),
-            s: Box::new(|u| o3(warp::cosine_hemisphere(u))),
-            p: Box::new(|u| l3(warp::x8::cosine_hemisphere(u))),
-            domain: dir_domain(0.0),
-            fixed: None,
-        },
-        Warp {
-            name: "uniform_sphere".into(),
-            s: Box::new(|u| o3(warp::uniform_sphere(u))),
-            p: Box::new(|u| l3(warp::x8::uniform_sphere(u))),
-            domain: dir_domain(-1.0),
-            fixed: None,
-        },
-        Warp {
-            name: "uniform_triangle".into(),
-            s: Box::new(|u| o3(warp::uniform_triangle(u))),
-            p: Box::new(|u| l3(warp::x8::uniform_triangle(u))),
-            domain: Box::new(|b| {
+        warp_case(
+            "concentric_disk",
+            warp::concentric_disk,
+            warp::x8::concentric_disk,
+            disk_domain(),
+            None,
+        ),
+        warp_case(
+            "polar_disk",
+            warp::polar_disk,
+            warp::x8::polar_disk,
+            disk_domain(),
+            None,
+        ),
+        warp_case(
+            "uniform_hemisphere",
+            warp::uniform_hemisphere,
+            warp::x8::uniform_hemisphere,
+            dir_domain(0.0),
+            None,
+        ),
+        warp_case(
+            "cosine_hemisphere",
+            warp::cosine_hemisphere,
+            warp::x8::cosine_hemisphere,
+            dir_domain(0.0),
+            None,
+        ),
+        warp_case(
+            "uniform_sphere",
+            warp::uniform_sphere,
+            warp::x8::uniform_sphere,
+            dir_domain(-1.0),
+            None,
+        ),
+        warp_case(
+            "uniform_triangle",
+            warp::uniform_triangle,
+            warp::x8::uniform_triangle,
+            Box::new(|b| {
                 finite("uniform_triangle", b)?;
                 let sum = b[0] as f64 + b[1] as f64 + b[2] as f64;
                 if b.iter().all(|&x| x >= 0.0) && (sum - 1.0).abs() <= 1e-6 {
@@ -281,39 +276,39 @@ fn warps() -> Vec<Warp> {
                     Err(format!("uniform_triangle: b = {b:?}, sum {sum}"))
                 }
             }),
-            fixed: None,
-        },
-        Warp {
-            name: "tent(u.x)".into(),
-            s: Box::new(|u| vec![warp::tent(u.x)]),
-            p: Box::new(|u| l1(warp::x8::tent(u.x))),
-            domain: Box::new(|x| {
+            None,
+        ),
+        warp_case(
+            "tent(u.x)",
+            |u: Vec2| warp::tent(u.x),
+            |u: Vec2x8| warp::x8::tent(u.x),
+            Box::new(|x| {
                 if (-1.0..=1.0).contains(&x[0]) {
                     Ok(())
                 } else {
                     Err(format!("tent: x = {}", x[0]))
                 }
             }),
-            fixed: None,
-        },
+            None,
+        ),
     ];
     for h in [2.0f32, 0.3, 1e-7] {
-        w.push(Warp {
-            name: format!("uniform_cone h={h}"),
-            s: Box::new(move |u| o3(warp::uniform_cone(u, h))),
-            p: Box::new(move |u| l3(warp::x8::uniform_cone(u, s1(h)))),
-            domain: dir_domain(1.0 - h as f64 - 1e-6),
-            fixed: None,
-        });
+        w.push(warp_case(
+            format!("uniform_cone h={h}"),
+            move |u| warp::uniform_cone(u, h),
+            move |u| warp::x8::uniform_cone(u, s1(h)),
+            dir_domain(1.0 - h as f64 - 1e-6),
+            None,
+        ));
     }
     for n in [0.0f32, 1.0, 20.0, 1e6] {
-        w.push(Warp {
-            name: format!("phong_lobe n={n}"),
-            s: Box::new(move |u| o3(warp::phong_lobe(u, n))),
-            p: Box::new(move |u| l3(warp::x8::phong_lobe(u, s1(n)))),
-            domain: dir_domain(0.0),
-            fixed: None,
-        });
+        w.push(warp_case(
+            format!("phong_lobe n={n}"),
+            move |u| warp::phong_lobe(u, n),
+            move |u| warp::x8::phong_lobe(u, s1(n)),
+            dir_domain(0.0),
+            None,
+        ));
     }
     for (label, t) in [
         ("large", TRI_LARGE),
@@ -321,13 +316,13 @@ fn warps() -> Vec<Warp> {
         ("tiny/area", tri_tiny()),
     ] {
         let (a, b, c) = (v(t[0]), v(t[1]), v(t[2]));
-        w.push(Warp {
-            name: format!("spherical_triangle {label}"),
-            s: Box::new(move |u| o3p(warp::spherical_triangle(u, a, b, c))),
-            p: Box::new(move |u| l3p(warp::x8::spherical_triangle(u, s3(a), s3(b), s3(c)))),
-            domain: sph_tri_domain(a, b, c),
-            fixed: Some(Vec3::Z),
-        });
+        w.push(warp_case(
+            format!("spherical_triangle {label}"),
+            move |u| warp::spherical_triangle(u, a, b, c),
+            move |u| warp::x8::spherical_triangle(u, s3(a), s3(b), s3(c)),
+            sph_tri_domain(a, b, c),
+            Some(Vec3::Z),
+        ));
     }
     for (label, r) in [
         ("big", RECT_BIG),
@@ -335,13 +330,13 @@ fn warps() -> Vec<Warp> {
         ("tiny/area", rect_tiny()),
     ] {
         let (c, ex, ey) = (v(r[0]), v(r[1]), v(r[2]));
-        w.push(Warp {
-            name: format!("spherical_rectangle {label}"),
-            s: Box::new(move |u| o3p(warp::spherical_rectangle(u, c, ex, ey))),
-            p: Box::new(move |u| l3p(warp::x8::spherical_rectangle(u, s3(c), s3(ex), s3(ey)))),
-            domain: sph_rect_domain(c, ex, ey),
-            fixed: Some(c),
-        });
+        w.push(warp_case(
+            format!("spherical_rectangle {label}"),
+            move |u| warp::spherical_rectangle(u, c, ex, ey),
+            move |u| warp::x8::spherical_rectangle(u, s3(c), s3(ex), s3(ey)),
+            sph_rect_domain(c, ex, ey),
+            Some(c),
+        ));
     }
     w
 }
@@ -349,10 +344,28 @@ fn warps() -> Vec<Warp> {
 /// Functions of one f32 (pdfs, inverses, helpers, warps in their parameter) for the NaN case.
 struct Fun {
     name: &'static str,
+    /// The scalar form, its result flattened.
     s: Box<dyn Fn(f32) -> Out>,
-    p: Box<dyn Fn(F32x8) -> Lanes>,
+    /// The packet form against the scalar form.
+    lanes: Lanes<f32>,
     /// What the documentation promises at NaN input.
     at_nan: Check,
+}
+
+fn fun_case<T: Scalar + 'static>(
+    name: &'static str,
+    scalar: impl Fn(f32) -> T + 'static,
+    packet: impl Fn(F32x8) -> T::X8 + 'static,
+    at_nan: Check,
+) -> Fun {
+    let scalar = Rc::new(scalar);
+    let s = Rc::clone(&scalar);
+    Fun {
+        name,
+        s: Box::new(move |x| flat(s(x))),
+        lanes: Box::new(move |xs| check_lanes(xs, &packet, &*scalar)),
+        at_nan,
+    }
 }
 
 fn is_zero(what: &'static str) -> Check {
@@ -394,280 +407,215 @@ fn funs() -> Vec<Fun> {
     let pn = |x: f32| Vec2::new(x, x);
     let pn8 = |x: F32x8| Vec2x8::new(x, x);
     vec![
-        Fun {
-            name: "cosine_hemisphere_pdf",
-            s: Box::new(|x| vec![warp::cosine_hemisphere_pdf(x)]),
-            p: Box::new(|x| l1(warp::x8::cosine_hemisphere_pdf(x))),
-            at_nan: is_zero("cosine_hemisphere_pdf"),
-        },
-        Fun {
-            name: "uniform_cone_pdf(h)",
-            s: Box::new(|x| vec![warp::uniform_cone_pdf(Vec3::Z, x)]),
-            p: Box::new(|x| l1(warp::x8::uniform_cone_pdf(Vec3x8::splat(Vec3::Z), x))),
-            at_nan: is_zero("uniform_cone_pdf"),
-        },
-        Fun {
-            name: "phong_lobe_pdf(cos, 20)",
-            s: Box::new(|x| vec![warp::phong_lobe_pdf(x, 20.0)]),
-            p: Box::new(|x| l1(warp::x8::phong_lobe_pdf(x, s1(20.0)))),
-            at_nan: is_zero("phong_lobe_pdf(NaN, n)"),
-        },
-        Fun {
-            name: "phong_lobe_pdf(0.5, n)",
-            s: Box::new(|x| vec![warp::phong_lobe_pdf(0.5, x)]),
-            p: Box::new(|x| l1(warp::x8::phong_lobe_pdf(s1(0.5), x))),
-            at_nan: is_zero("phong_lobe_pdf(cos, NaN)"),
-        },
-        Fun {
-            name: "tent_pdf",
-            s: Box::new(|x| vec![warp::tent_pdf(x)]),
-            p: Box::new(|x| l1(warp::x8::tent_pdf(x))),
-            at_nan: is_zero("tent_pdf"),
-        },
-        Fun {
-            name: "tent_inverse",
-            s: Box::new(|x| vec![warp::tent_inverse(x)]),
-            p: Box::new(|x| l1(warp::x8::tent_inverse(x))),
-            at_nan: any(),
-        },
-        Fun {
-            name: "uniform_triangle_pdf(b, b)",
-            s: Box::new(move |x| vec![warp::uniform_triangle_pdf(pn(x))]),
-            p: Box::new(move |x| l1(warp::x8::uniform_triangle_pdf(pn8(x)))),
-            at_nan: is_zero("uniform_triangle_pdf"),
-        },
-        Fun {
-            name: "uniform_triangle_pdf(b, 0.2)",
-            s: Box::new(|x| vec![warp::uniform_triangle_pdf(Vec2::new(x, 0.2))]),
-            p: Box::new(|x| l1(warp::x8::uniform_triangle_pdf(Vec2x8::new(x, s1(0.2))))),
-            at_nan: is_zero("uniform_triangle_pdf"),
-        },
-        Fun {
-            name: "spherical_triangle_pdf(w)",
-            s: Box::new(move |x| vec![warp::spherical_triangle_pdf(wn(x), t[0], t[1], t[2])]),
-            p: Box::new(move |x| {
-                l1(warp::x8::spherical_triangle_pdf(
-                    wn8(x),
-                    s3(t[0]),
-                    s3(t[1]),
-                    s3(t[2]),
-                ))
-            }),
-            at_nan: is_zero("spherical_triangle_pdf"),
-        },
-        Fun {
-            name: "spherical_triangle_pdf(vertex a)",
-            s: Box::new(move |x| vec![warp::spherical_triangle_pdf(Vec3::Z, wn(x), t[1], t[2])]),
-            p: Box::new(move |x| {
-                l1(warp::x8::spherical_triangle_pdf(
-                    s3(Vec3::Z),
-                    wn8(x),
-                    s3(t[1]),
-                    s3(t[2]),
-                ))
-            }),
-            at_nan: is_zero("spherical_triangle_pdf"),
-        },
-        Fun {
-            name: "spherical_triangle(vertex c)",
-            s: Box::new(move |x| {
-                o3p(warp::spherical_triangle(
-                    Vec2::splat(0.3),
-                    t[0],
-                    t[1],
-                    wn(x),
-                ))
-            }),
-            p: Box::new(move |x| {
-                l3p(warp::x8::spherical_triangle(
+        fun_case(
+            "cosine_hemisphere_pdf",
+            warp::cosine_hemisphere_pdf,
+            warp::x8::cosine_hemisphere_pdf,
+            is_zero("cosine_hemisphere_pdf"),
+        ),
+        fun_case(
+            "uniform_cone_pdf(h)",
+            |x| warp::uniform_cone_pdf(Vec3::Z, x),
+            |x| warp::x8::uniform_cone_pdf(Vec3x8::splat(Vec3::Z), x),
+            is_zero("uniform_cone_pdf"),
+        ),
+        fun_case(
+            "phong_lobe_pdf(cos, 20)",
+            |x| warp::phong_lobe_pdf(x, 20.0),
+            |x| warp::x8::phong_lobe_pdf(x, s1(20.0)),
+            is_zero("phong_lobe_pdf(NaN, n)"),
+        ),
+        fun_case(
+            "phong_lobe_pdf(0.5, n)",
+            |x| warp::phong_lobe_pdf(0.5, x),
+            |x| warp::x8::phong_lobe_pdf(s1(0.5), x),
+            is_zero("phong_lobe_pdf(cos, NaN)"),
+        ),
+        fun_case(
+            "tent_pdf",
+            warp::tent_pdf,
+            warp::x8::tent_pdf,
+            is_zero("tent_pdf"),
+        ),
+        fun_case(
+            "tent_inverse",
+            warp::tent_inverse,
+            warp::x8::tent_inverse,
+            any(),
+        ),
+        fun_case(
+            "uniform_triangle_pdf(b, b)",
+            move |x| warp::uniform_triangle_pdf(pn(x)),
+            move |x| warp::x8::uniform_triangle_pdf(pn8(x)),
+            is_zero("uniform_triangle_pdf"),
+        ),
+        fun_case(
+            "uniform_triangle_pdf(b, 0.2)",
+            |x| warp::uniform_triangle_pdf(Vec2::new(x, 0.2)),
+            |x| warp::x8::uniform_triangle_pdf(Vec2x8::new(x, s1(0.2))),
+            is_zero("uniform_triangle_pdf"),
+        ),
+        fun_case(
+            "spherical_triangle_pdf(w)",
+            move |x| warp::spherical_triangle_pdf(wn(x), t[0], t[1], t[2]),
+            move |x| warp::x8::spherical_triangle_pdf(wn8(x), s3(t[0]), s3(t[1]), s3(t[2])),
+            is_zero("spherical_triangle_pdf"),
+        ),
+        fun_case(
+            "spherical_triangle_pdf(vertex a)",
+            move |x| warp::spherical_triangle_pdf(Vec3::Z, wn(x), t[1], t[2]),
+            move |x| warp::x8::spherical_triangle_pdf(s3(Vec3::Z), wn8(x), s3(t[1]), s3(t[2])),
+            is_zero("spherical_triangle_pdf"),
+        ),
+        fun_case(
+            "spherical_triangle(vertex c)",
+            move |x| warp::spherical_triangle(Vec2::splat(0.3), t[0], t[1], wn(x)),
+            move |x| {
+                warp::x8::spherical_triangle(
                     Vec2x8::splat(Vec2::splat(0.3)),
                     s3(t[0]),
                     s3(t[1]),
                     wn8(x),
-                ))
-            }),
-            at_nan: last_is_zero("spherical_triangle with a NaN vertex"),
-        },
-        Fun {
-            name: "spherical_triangle_inverse(w)",
-            s: Box::new(move |x| o2(warp::spherical_triangle_inverse(wn(x), t[0], t[1], t[2]))),
-            p: Box::new(move |x| {
-                l2(warp::x8::spherical_triangle_inverse(
-                    wn8(x),
-                    s3(t[0]),
-                    s3(t[1]),
-                    s3(t[2]),
-                ))
-            }),
-            at_nan: any(),
-        },
-        Fun {
-            name: "spherical_rectangle_pdf(w)",
-            s: Box::new(move |x| vec![warp::spherical_rectangle_pdf(wn(x), r[0], r[1], r[2])]),
-            p: Box::new(move |x| {
-                l1(warp::x8::spherical_rectangle_pdf(
-                    wn8(x),
-                    s3(r[0]),
-                    s3(r[1]),
-                    s3(r[2]),
-                ))
-            }),
-            at_nan: is_zero("spherical_rectangle_pdf"),
-        },
-        Fun {
-            name: "spherical_rectangle(corner)",
-            s: Box::new(move |x| {
-                o3p(warp::spherical_rectangle(
-                    Vec2::splat(0.3),
-                    wn(x),
-                    r[1],
-                    r[2],
-                ))
-            }),
-            p: Box::new(move |x| {
-                l3p(warp::x8::spherical_rectangle(
+                )
+            },
+            last_is_zero("spherical_triangle with a NaN vertex"),
+        ),
+        fun_case(
+            "spherical_triangle_inverse(w)",
+            move |x| warp::spherical_triangle_inverse(wn(x), t[0], t[1], t[2]),
+            move |x| warp::x8::spherical_triangle_inverse(wn8(x), s3(t[0]), s3(t[1]), s3(t[2])),
+            any(),
+        ),
+        fun_case(
+            "spherical_rectangle_pdf(w)",
+            move |x| warp::spherical_rectangle_pdf(wn(x), r[0], r[1], r[2]),
+            move |x| warp::x8::spherical_rectangle_pdf(wn8(x), s3(r[0]), s3(r[1]), s3(r[2])),
+            is_zero("spherical_rectangle_pdf"),
+        ),
+        fun_case(
+            "spherical_rectangle(corner)",
+            move |x| warp::spherical_rectangle(Vec2::splat(0.3), wn(x), r[1], r[2]),
+            move |x| {
+                warp::x8::spherical_rectangle(
                     Vec2x8::splat(Vec2::splat(0.3)),
                     wn8(x),
                     s3(r[1]),
                     s3(r[2]),
-                ))
-            }),
-            at_nan: last_is_zero("spherical_rectangle with a NaN corner"),
-        },
-        Fun {
-            name: "spherical_rectangle_inverse(p)",
-            s: Box::new(move |x| o2(warp::spherical_rectangle_inverse(wn(x), r[0], r[1], r[2]))),
-            p: Box::new(move |x| {
-                l2(warp::x8::spherical_rectangle_inverse(
-                    wn8(x),
-                    s3(r[0]),
-                    s3(r[1]),
-                    s3(r[2]),
-                ))
-            }),
-            at_nan: any(),
-        },
-        Fun {
-            name: "cone_h_from_sin2",
-            s: Box::new(|x| vec![warp::cone_h_from_sin2(x)]),
-            p: Box::new(|x| l1(warp::x8::cone_h_from_sin2(x))),
-            at_nan: all_nan("cone_h_from_sin2"),
-        },
-        Fun {
-            name: "cone_h_from_cos",
-            s: Box::new(|x| vec![warp::cone_h_from_cos(x)]),
-            p: Box::new(|x| l1(warp::x8::cone_h_from_cos(x))),
-            at_nan: any(),
-        },
-        Fun {
-            name: "uniform_cone(u, h)",
-            s: Box::new(|x| o3(warp::uniform_cone(Vec2::splat(0.3), x))),
-            p: Box::new(|x| l3(warp::x8::uniform_cone(Vec2x8::splat(Vec2::splat(0.3)), x))),
-            at_nan: any(),
-        },
-        Fun {
-            name: "phong_lobe(u, n)",
-            s: Box::new(|x| o3(warp::phong_lobe(Vec2::splat(0.3), x))),
-            p: Box::new(|x| l3(warp::x8::phong_lobe(Vec2x8::splat(Vec2::splat(0.3)), x))),
-            at_nan: any(),
-        },
-        Fun {
-            name: "concentric_disk_inverse",
-            s: Box::new(move |x| o2(warp::concentric_disk_inverse(pn(x)))),
-            p: Box::new(move |x| l2(warp::x8::concentric_disk_inverse(pn8(x)))),
-            at_nan: all_nan("concentric_disk_inverse"),
-        },
-        Fun {
-            name: "polar_disk_inverse",
-            s: Box::new(move |x| o2(warp::polar_disk_inverse(pn(x)))),
-            p: Box::new(move |x| l2(warp::x8::polar_disk_inverse(pn8(x)))),
-            at_nan: all_nan("polar_disk_inverse"),
-        },
-        Fun {
-            name: "uniform_hemisphere_inverse",
-            s: Box::new(move |x| o2(warp::uniform_hemisphere_inverse(wn(x)))),
-            p: Box::new(move |x| l2(warp::x8::uniform_hemisphere_inverse(wn8(x)))),
-            at_nan: any(),
-        },
-        Fun {
-            name: "cosine_hemisphere_inverse",
-            s: Box::new(move |x| o2(warp::cosine_hemisphere_inverse(wn(x)))),
-            p: Box::new(move |x| l2(warp::x8::cosine_hemisphere_inverse(wn8(x)))),
-            at_nan: any(),
-        },
-        Fun {
-            name: "uniform_sphere_inverse",
-            s: Box::new(move |x| o2(warp::uniform_sphere_inverse(wn(x)))),
-            p: Box::new(move |x| l2(warp::x8::uniform_sphere_inverse(wn8(x)))),
-            at_nan: any(),
-        },
-        Fun {
-            name: "uniform_cone_inverse(w, 0.3)",
-            s: Box::new(move |x| o2(warp::uniform_cone_inverse(wn(x), 0.3))),
-            p: Box::new(move |x| l2(warp::x8::uniform_cone_inverse(wn8(x), s1(0.3)))),
-            at_nan: any(),
-        },
-        Fun {
-            name: "uniform_cone_inverse(w, h)",
-            s: Box::new(|x| o2(warp::uniform_cone_inverse(Vec3::new(0.1, 0.2, 0.97), x))),
-            p: Box::new(|x| {
-                l2(warp::x8::uniform_cone_inverse(
-                    s3(Vec3::new(0.1, 0.2, 0.97)),
-                    x,
-                ))
-            }),
-            at_nan: any(),
-        },
-        Fun {
-            name: "phong_lobe_inverse(w, 20)",
-            s: Box::new(move |x| o2(warp::phong_lobe_inverse(wn(x), 20.0))),
-            p: Box::new(move |x| l2(warp::x8::phong_lobe_inverse(wn8(x), s1(20.0)))),
-            at_nan: any(),
-        },
-        Fun {
-            name: "phong_lobe_inverse(w, n)",
-            s: Box::new(|x| o2(warp::phong_lobe_inverse(Vec3::new(0.1, 0.2, 0.97), x))),
-            p: Box::new(|x| {
-                l2(warp::x8::phong_lobe_inverse(
-                    s3(Vec3::new(0.1, 0.2, 0.97)),
-                    x,
-                ))
-            }),
-            at_nan: any(),
-        },
-        Fun {
-            name: "uniform_triangle_inverse",
-            s: Box::new(move |x| o2(warp::uniform_triangle_inverse(wn(x)))),
-            p: Box::new(move |x| l2(warp::x8::uniform_triangle_inverse(wn8(x)))),
-            at_nan: any(),
-        },
-        Fun {
-            name: "Frame::from_normal + to_world + to_local",
-            s: Box::new(move |x| {
+                )
+            },
+            last_is_zero("spherical_rectangle with a NaN corner"),
+        ),
+        fun_case(
+            "spherical_rectangle_inverse(p)",
+            move |x| warp::spherical_rectangle_inverse(wn(x), r[0], r[1], r[2]),
+            move |x| warp::x8::spherical_rectangle_inverse(wn8(x), s3(r[0]), s3(r[1]), s3(r[2])),
+            any(),
+        ),
+        fun_case(
+            "cone_h_from_sin2",
+            warp::cone_h_from_sin2,
+            warp::x8::cone_h_from_sin2,
+            all_nan("cone_h_from_sin2"),
+        ),
+        fun_case(
+            "cone_h_from_cos",
+            warp::cone_h_from_cos,
+            warp::x8::cone_h_from_cos,
+            any(),
+        ),
+        fun_case(
+            "uniform_cone(u, h)",
+            |x| warp::uniform_cone(Vec2::splat(0.3), x),
+            |x| warp::x8::uniform_cone(Vec2x8::splat(Vec2::splat(0.3)), x),
+            any(),
+        ),
+        fun_case(
+            "phong_lobe(u, n)",
+            |x| warp::phong_lobe(Vec2::splat(0.3), x),
+            |x| warp::x8::phong_lobe(Vec2x8::splat(Vec2::splat(0.3)), x),
+            any(),
+        ),
+        fun_case(
+            "concentric_disk_inverse",
+            move |x| warp::concentric_disk_inverse(pn(x)),
+            move |x| warp::x8::concentric_disk_inverse(pn8(x)),
+            all_nan("concentric_disk_inverse"),
+        ),
+        fun_case(
+            "polar_disk_inverse",
+            move |x| warp::polar_disk_inverse(pn(x)),
+            move |x| warp::x8::polar_disk_inverse(pn8(x)),
+            all_nan("polar_disk_inverse"),
+        ),
+        fun_case(
+            "uniform_hemisphere_inverse",
+            move |x| warp::uniform_hemisphere_inverse(wn(x)),
+            move |x| warp::x8::uniform_hemisphere_inverse(wn8(x)),
+            any(),
+        ),
+        fun_case(
+            "cosine_hemisphere_inverse",
+            move |x| warp::cosine_hemisphere_inverse(wn(x)),
+            move |x| warp::x8::cosine_hemisphere_inverse(wn8(x)),
+            any(),
+        ),
+        fun_case(
+            "uniform_sphere_inverse",
+            move |x| warp::uniform_sphere_inverse(wn(x)),
+            move |x| warp::x8::uniform_sphere_inverse(wn8(x)),
+            any(),
+        ),
+        fun_case(
+            "uniform_cone_inverse(w, 0.3)",
+            move |x| warp::uniform_cone_inverse(wn(x), 0.3),
+            move |x| warp::x8::uniform_cone_inverse(wn8(x), s1(0.3)),
+            any(),
+        ),
+        fun_case(
+            "uniform_cone_inverse(w, h)",
+            |x| warp::uniform_cone_inverse(Vec3::new(0.1, 0.2, 0.97), x),
+            |x| warp::x8::uniform_cone_inverse(s3(Vec3::new(0.1, 0.2, 0.97)), x),
+            any(),
+        ),
+        fun_case(
+            "phong_lobe_inverse(w, 20)",
+            move |x| warp::phong_lobe_inverse(wn(x), 20.0),
+            move |x| warp::x8::phong_lobe_inverse(wn8(x), s1(20.0)),
+            any(),
+        ),
+        fun_case(
+            "phong_lobe_inverse(w, n)",
+            |x| warp::phong_lobe_inverse(Vec3::new(0.1, 0.2, 0.97), x),
+            |x| warp::x8::phong_lobe_inverse(s3(Vec3::new(0.1, 0.2, 0.97)), x),
+            any(),
+        ),
+        fun_case(
+            "uniform_triangle_inverse",
+            move |x| warp::uniform_triangle_inverse(wn(x)),
+            move |x| warp::x8::uniform_triangle_inverse(wn8(x)),
+            any(),
+        ),
+        fun_case(
+            "Frame::from_normal + to_world + to_local",
+            |x| {
                 let f = Frame::from_normal(Vec3::new(x, 0.6, 0.8));
-                let mut o = o3(f.t);
-                o.extend(o3(f.b));
-                o.extend(o3(f.to_world(Vec3::new(0.1, 0.2, 0.3))));
-                o.extend(o3(f.to_local(Vec3::new(0.1, 0.2, 0.3))));
-                o
-            }),
-            p: Box::new(move |x| {
+                let v = Vec3::new(0.1, 0.2, 0.3);
+                (f.t, f.b, (f.to_world(v), f.to_local(v)))
+            },
+            |x| {
                 let f = mcsample::frame::x8::Frame::from_normal(Vec3x8::new(x, s1(0.6), s1(0.8)));
-                let mut o = l3(f.t);
-                o.extend(l3(f.b));
-                o.extend(l3(f.to_world(s3(Vec3::new(0.1, 0.2, 0.3)))));
-                o.extend(l3(f.to_local(s3(Vec3::new(0.1, 0.2, 0.3)))));
-                o
-            }),
+                let v = s3(Vec3::new(0.1, 0.2, 0.3));
+                (f.t, f.b, (f.to_world(v), f.to_local(v)))
+            },
             // "NaN components give NaN axes."
-            at_nan: Box::new(|o| {
+            Box::new(|o| {
                 let t_nan = o[0..3].iter().any(|x| x.is_nan());
                 let b_nan = o[3..6].iter().any(|x| x.is_nan());
                 check(t_nan && b_nan, || {
                     format!("Frame at a NaN normal: t, b = {:?}", &o[0..6])
                 })
             }),
-        },
+        ),
     ]
 }
 
@@ -1204,10 +1152,8 @@ hard_case!(
             let polygon = w.name.starts_with("spherical_");
             for u in [Vec2::splat(nan), Vec2::new(nan, 0.5), Vec2::new(0.5, nan)] {
                 let s = (w.s)(u);
-                let p = (w.p)(Vec2x8::splat(u));
-                for lane in 0..8 {
-                    r.push(same_bits(&format!("{} u={u:?}", w.name), &s, &p, lane));
-                }
+                // Eight lanes of u against the scalar.
+                r.push(same_lanes(&format!("{} u={u:?}", w.name), (w.lanes)(&[u])));
                 // "NaN in gives NaN out, always the canonical quiet NaN."
                 r.push(canonical(&format!("{} u={u:?}", w.name), &s));
                 let doc = if polygon {
@@ -1234,35 +1180,35 @@ hard_case!(
         }
         for f in funs() {
             let s = (f.s)(nan);
-            let p = (f.p)(s1(nan));
-            for lane in 0..8 {
-                r.push(same_bits(f.name, &s, &p, lane));
-            }
+            r.push(same_lanes(f.name, (f.lanes)(&[nan])));
             r.push(canonical(f.name, &s));
             r.push((f.at_nan)(&s));
         }
-        // constant pdfs: same bits.
-        for (name, s, p) in [
-            (
-                "uniform_disk_pdf",
-                warp::uniform_disk_pdf(Vec2::ZERO),
-                warp::x8::uniform_disk_pdf(Vec2x8::splat(Vec2::ZERO)),
+        // Constant pdfs: same bits.
+        r.push(same_lanes(
+            "uniform_disk_pdf",
+            check_lanes(
+                &[Vec2::ZERO],
+                warp::x8::uniform_disk_pdf,
+                warp::uniform_disk_pdf,
             ),
-            (
-                "uniform_hemisphere_pdf",
-                warp::uniform_hemisphere_pdf(Vec3::Z),
-                warp::x8::uniform_hemisphere_pdf(Vec3x8::splat(Vec3::Z)),
+        ));
+        r.push(same_lanes(
+            "uniform_hemisphere_pdf",
+            check_lanes(
+                &[Vec3::Z],
+                warp::x8::uniform_hemisphere_pdf,
+                warp::uniform_hemisphere_pdf,
             ),
-            (
-                "uniform_sphere_pdf",
-                warp::uniform_sphere_pdf(Vec3::Z),
-                warp::x8::uniform_sphere_pdf(Vec3x8::splat(Vec3::Z)),
+        ));
+        r.push(same_lanes(
+            "uniform_sphere_pdf",
+            check_lanes(
+                &[Vec3::Z],
+                warp::x8::uniform_sphere_pdf,
+                warp::uniform_sphere_pdf,
             ),
-        ] {
-            for lane in 0..8 {
-                r.push(same_bits(name, &[s], &[p.to_array()], lane));
-            }
-        }
+        ));
         collect(r)
     }
 );
@@ -1283,19 +1229,13 @@ hard_case!(
             -0.0,
             0.5,
         ];
+        // One packet: lane i holds input i.
         let lanes: [Vec2; 8] = std::array::from_fn(|i| Vec2::new(vals[i], vals[(i * 3 + 1) % 8]));
-        let packet = Vec2x8::from(lanes);
         for w in warps() {
-            let p = (w.p)(packet);
-            for (i, &u) in lanes.iter().enumerate() {
-                r.push(same_bits(&format!("{} u={u:?}", w.name), &(w.s)(u), &p, i));
-            }
+            r.push(same_lanes(&w.name, (w.lanes)(&lanes)));
         }
         for f in funs() {
-            let p = (f.p)(F32x8::new(vals));
-            for (i, &x) in vals.iter().enumerate() {
-                r.push(same_bits(&format!("{} x={x}", f.name), &(f.s)(x), &p, i));
-            }
+            r.push(same_lanes(f.name, (f.lanes)(&vals)));
         }
         collect(r)
     }

@@ -8,24 +8,22 @@
 //! the zoomed samples is pdf·hs/2, and 101 rows of cells resolve the lobe instead of one. A sample
 //! outside the cap counts as outside the domain and fails the test.
 
+mod common;
+
 use std::f64::consts::PI;
 
+use common::TestRng;
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use mcsample::verify::{
     Cap, ChiSquare, ChiSquareResult, PlanarLight, sidak_alpha, square_to_triangle,
     triangle_to_square,
 };
 use mcsample::warp;
-use rand_core::Rng;
-use rand_pcg::Pcg32;
 
-/// The u sequence: PCG32 with a fixed stream, 24-bit floats in [0, 1).
+/// The u sequence: pairs of 24-bit floats in [0, 1) from the shared test generator.
 fn u_seq(seed: u64) -> impl FnMut(usize) -> Vec2 {
-    let mut rng = Pcg32::new(seed, 0x0a02_bdbf_7bb3_c0a7);
-    move |_| {
-        let mut f = || (rng.next_u32() >> 8) as f32 * (1.0 / 16_777_216.0);
-        Vec2::new(f(), f())
-    }
+    let mut rng = TestRng::new(seed);
+    move |_| rng.u2()
 }
 
 /// χ² on a zoomed cap (see [`Cap`]) of an f32 sampler against an f32 pdf.

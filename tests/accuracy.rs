@@ -3,10 +3,11 @@
 //! Inputs: the 256 × 256 stratified grid, 2¹⁶ random 24-bit pairs and a border set (values on
 //! and next to the square's edges and diagonals): 131,172 inputs per warp and configuration.
 //!
-//! Bounds (DESIGN.md, "Targets"): warped points and directions within 2e-6 absolute, measured as
-//! the Euclidean distance |got − want| (which bounds every component); pdfs within 1e-5 relative.
-//! Where a test uses another bound it says why next to it. Every test prints its measured
-//! maximum and the worst input (`cargo test --test accuracy -- --nocapture`).
+//! Bounds (the crate's accuracy targets, as the README states them): warped points and
+//! directions within 2e-6 absolute, measured as the Euclidean distance |got − want| (which bounds
+//! every component); pdfs within 1e-5 relative. Where a test uses another bound it says why next
+//! to it. Every test prints its measured maximum and the worst input (`cargo test --test accuracy
+//! -- --nocapture`).
 
 mod common;
 
@@ -513,8 +514,9 @@ fn frame_is_orthonormal_and_matches_duff() {
         let back = f.to_world(f.to_local(v));
         mw.add(dist3(dv3(back), dv3(v)), || format!("n={n:?} got {back:?}"));
     }
-    // Orthonormal to 1e-6 (REFERENCES §8 case 12); the tangents within 2e-6 of the f64 Duff frame
-    // of the same f32 normal; the round trip within 2e-6.
+    // Orthonormal to 1e-6, also at n_z → −1 (Duff et al. 2017 remove the breakdown of Frisvad's
+    // 2012 frame there); the tangents within 2e-6 of the f64 Duff frame of the same f32 normal;
+    // the round trip within 2e-6.
     assert_all(vec![
         mo.check(1e-6),
         mr.check(POINT_TOL),

@@ -1,6 +1,7 @@
-//! Distribution: χ² goodness of fit of every warp against its own pdf (REFERENCES.md §7), with a
-//! Šidák correction over all of them, negative controls that must be rejected, and ∫pdf = 1 by a
-//! quadrature independent of the harness.
+//! Distribution: χ² goodness of fit of every warp against its own pdf (Jakob's χ² test from
+//! Mitsuba: equal-area bins, expected counts integrated from the pdf, cells expecting fewer than
+//! 5 pooled), with a Šidák correction over all of them, negative controls that must be rejected,
+//! and ∫pdf = 1 by a quadrature independent of the harness.
 //!
 //! Narrow lobes and small lights are zoomed before binning: a cap of directions about an axis,
 //! 1 − cos θ ∈ [0, hs], is stretched onto the whole sphere by z' = 1 − 2(1 − cos θ)/hs with the
@@ -268,7 +269,8 @@ fn returned_pdf_equals_pdf_function() {
     println!("worst relative difference {worst:e}");
 }
 
-/// The test must reject broken samplers (REFERENCES.md §7: negative controls are mandatory).
+/// The test must reject broken samplers: a goodness-of-fit test that has never rejected anything
+/// proves nothing, so each control here is a known-broken sampler or pdf that must fail.
 #[test]
 fn negative_controls_are_rejected() {
     let inv_pi = 1.0 / PI;

@@ -1,13 +1,22 @@
 //! Hard inputs, each with the behaviour it requires, one test per case (run one by name, e.g.
 //! `cargo test --test hard_cases case_04`):
 //!
-//! - exact values at the centre of the square (1) and finite, in-domain results on its boundary
-//!   (2, 14);
-//! - the precision cliffs of the textbook forms: the sphere's radius at u₀ = 1e-8 (3), cones of
-//!   h = 1e-7 and of sin²θmax = 1e-8 (4–6), a Phong lobe of exponent 10⁶ and of exponent 0 (7, 8);
-//! - barycentrics that stay non-negative on the diagonal u₀ = u₁ (9);
-//! - spherical triangles of 3e-7 sr (10) and degenerate ones (11), rectangles seen edge-on (17);
-//! - the orthonormal frame at n_z = −0.9999999 and at ±z (12);
+//! - exact values at the centre of the square: the concentric map (Shirley and Chiu 1997) sends
+//!   (½, ½) to (0, 0), so the cosine hemisphere (Malley's method) gives +z with pdf 1/π (1); and
+//!   finite, in-domain results on the square's boundary (2, 14);
+//! - the precision cliffs of the textbook forms: the sphere's radius 2√(u₀(1 − u₀)) = 2e-4 at
+//!   u₀ = 1e-8, where √(1 − z²) in f32 gives 0 (3); cones of h = 1 − cos θmax = 1e-7 and of
+//!   sin²θmax = 1e-8, with h = s²/(1 + √(1 − s²)) (4–6); a Phong lobe of exponent 10⁶, where the
+//!   naive cos α = u₀^{1/(n+1)} collapses onto a few directions, and of exponent 0, which is the
+//!   uniform hemisphere (7, 8);
+//! - barycentrics of the low-distortion triangle map (Heitz 2019) that stay non-negative on the
+//!   diagonal u₀ = u₁ (9);
+//! - Arvo's (1995) spherical triangle at 3e-7 sr, where f32 meets the 1e-4 pdf bound only with
+//!   Van Oosterom and Strackee's (1983) solid angle on raw edge vectors (the angle sum is 47 %
+//!   off) (10), and degenerate triangles (11); Ureña et al.'s (2013) spherical rectangle seen
+//!   edge-on (17);
+//! - the orthonormal frame of Duff et al. (2017) at n_z = −0.9999999, where Frisvad's 2012 form
+//!   breaks down, and at ±z (12);
 //! - NaN inputs, alone and mixed with other bad values across the lanes of a packet: the packet
 //!   form equals the scalar form bit for bit, and NaN outputs are the canonical quiet NaN (15,
 //!   15b);

@@ -1,7 +1,10 @@
-//! Independent f64 references for the warps, written from the textbook formulas in
-//! REFERENCES.md §1 (not from the crate's generic code, and without calling into `mcsample`), and
-//! small helpers the tests share: the tests' one random number generator ([`TestRng`]),
-//! stratified grids and f64 vector arithmetic.
+//! Independent f64 references for the warps, written from the textbook formulas of the papers
+//! named at each function: Shirley and Chiu 1997 (concentric disk), Malley's method (cosine
+//! hemisphere), Heitz 2019 (triangle), Arvo 1995 and Van Oosterom and Strackee 1983 (spherical
+//! triangle and its solid angle), Ureña et al. 2013 (spherical rectangle), Duff et al. 2017
+//! (orthonormal frame). They are not written from the crate's generic code and do not call into
+//! `mcsample`. Beside them, small helpers the tests share: the tests' one random number generator
+//! ([`TestRng`]), stratified grids and f64 vector arithmetic.
 //!
 //! The references deliberately use the *plain* forms where f64 has the precision to spare
 //! (Shirley–Chiu's four-branch concentric map, acos angles, √(1−z²) radii), so that a shared
@@ -619,7 +622,8 @@ pub fn rect_coords(p: D3, corner: D3, ex: D3, ey: D3) -> D3 {
 /// silently (each reference against an independent fact).
 pub fn self_check() -> Result<(), String> {
     let mut err = Vec::new();
-    // Concentric: the exact values of REFERENCES §1.
+    // Concentric (Shirley and Chiu 1997): u = (0, 0) is a = b = −1, so r = 1 and φ = 5π/4;
+    // u = (0, ½) is a = −1, b = 0, so r = 1 and φ = π.
     let p = concentric_disk([0.0, 0.0]);
     if dist2(p, [-FRAC_PI_4.cos(), -FRAC_PI_4.sin()]) > 1e-15 {
         err.push(format!("concentric(0,0) = {p:?}"));

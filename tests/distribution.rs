@@ -1,6 +1,7 @@
-//! Distribution: χ² goodness of fit of every warp against its own pdf (REFERENCES.md §7), with a
-//! Šidák correction over all of them, negative controls that must be rejected, and ∫pdf = 1 by a
-//! quadrature independent of the harness.
+//! Distribution: χ² goodness of fit of every warp against its own pdf (Jakob's χ² test from
+//! Mitsuba: equal-area bins, expected counts integrated from the pdf, cells expecting fewer than
+//! 5 pooled), with a Šidák correction over all of them, negative controls that must be rejected,
+//! and ∫pdf = 1 by a quadrature independent of the harness.
 //!
 //! Narrow lobes and small lights are zoomed before binning: a cap of directions about an axis,
 //! 1 − cos θ ∈ [0, hs], is stretched onto the whole sphere by z' = 1 − 2(1 − cos θ)/hs with the
@@ -8,24 +9,22 @@
 //! the zoomed samples is pdf·hs/2, and 101 rows of cells resolve the lobe instead of one. A sample
 //! outside the cap counts as outside the domain and fails the test.
 
+mod common;
+
 use std::f64::consts::PI;
 
+use common::TestRng;
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use mcsample::verify::{
     Cap, ChiSquare, ChiSquareResult, PlanarLight, sidak_alpha, square_to_triangle,
     triangle_to_square,
 };
 use mcsample::warp;
-use rand_core::Rng;
-use rand_pcg::Pcg32;
 
-/// The u sequence: PCG32 with a fixed stream, 24-bit floats in [0, 1).
+/// The u sequence: pairs of 24-bit floats in [0, 1) from the shared test generator.
 fn u_seq(seed: u64) -> impl FnMut(usize) -> Vec2 {
-    let mut rng = Pcg32::new(seed, 0x0a02_bdbf_7bb3_c0a7);
-    move |_| {
-        let mut f = || (rng.next_u32() >> 8) as f32 * (1.0 / 16_777_216.0);
-        Vec2::new(f(), f())
-    }
+    let mut rng = TestRng::new(seed);
+    move |_| rng.u2()
 }
 
 /// χ² on a zoomed cap (see [`Cap`]) of an f32 sampler against an f32 pdf.
@@ -270,7 +269,8 @@ fn returned_pdf_equals_pdf_function() {
     println!("worst relative difference {worst:e}");
 }
 
-/// The test must reject broken samplers (REFERENCES.md §7: negative controls are mandatory).
+/// The test must reject broken samplers: a goodness-of-fit test that has never rejected anything
+/// proves nothing, so each control here is a known-broken sampler or pdf that must fail.
 #[test]
 fn negative_controls_are_rejected() {
     let inv_pi = 1.0 / PI;

@@ -3,13 +3,14 @@
 //! Parameters and geometry differ from lane to lane, so one packet mixes code paths (spherical
 //! and area sampling, inside and outside a support).
 
+mod common;
+
+use common::TestRng;
 use glam::{Vec2, Vec3};
 use mcsample::frame::{self, Frame};
 use mcsample::verify::{Scalar, check_lanes};
 use mcsample::warp::{self, ONE_MINUS_EPS};
 use mcsample::x8::{F32x8, Vec2x8, Vec3x8};
-use rand_core::Rng;
-use rand_pcg::Pcg32;
 
 const N: usize = 1 << 16;
 
@@ -36,79 +37,71 @@ const HARD: [f32; 16] = [
     0.75,
 ];
 
-struct Gen(Pcg32);
+// Inputs, drawn from the shared test generator.
 
-impl Gen {
-    fn new(seed: u64) -> Self {
-        Gen(Pcg32::new(seed, 0x5851_f42d_4c95_7f2d))
+/// Mostly in [0, 1), one time in eight a hard value.
+fn u1(g: &mut TestRng) -> f32 {
+    if g.below(8) == 0 { hard(g) } else { g.u01() }
+}
+fn hard(g: &mut TestRng) -> f32 {
+    HARD[g.below(16) as usize]
+}
+fn u2(g: &mut TestRng) -> Vec2 {
+    let x = u1(g);
+    Vec2::new(x, u1(g))
+}
+/// Log-uniform in [lo, hi], sometimes a hard value.
+fn param(g: &mut TestRng, lo: f32, hi: f32) -> f32 {
+    if g.below(8) == 0 {
+        hard(g)
+    } else {
+        lo * (hi / lo).powf(g.u01())
     }
-    fn unit(&mut self) -> f32 {
-        (self.0.next_u32() >> 8) as f32 * (1.0 / 16_777_216.0)
+}
+fn dir(g: &mut TestRng) -> Vec3 {
+    let z = 1.0 - 2.0 * g.u01();
+    let r = (1.0 - z * z).max(0.0).sqrt();
+    let phi = std::f32::consts::TAU * g.u01();
+    Vec3::new(r * phi.cos(), r * phi.sin(), z)
+}
+/// Mostly unit directions, sometimes a hard component.
+fn w(g: &mut TestRng) -> Vec3 {
+    let mut w = dir(g);
+    if g.below(8) == 0 {
+        w[g.below(3) as usize] = hard(g);
     }
-    /// Mostly in [0, 1), one time in eight a hard value.
-    fn u1(&mut self) -> f32 {
-        if self.0.next_u32().is_multiple_of(8) {
-            HARD[(self.0.next_u32() % 16) as usize]
-        } else {
-            self.unit()
-        }
+    w
+}
+/// Triangles of every size: far and tiny, near and huge, degenerate, with hard components.
+fn triangle(g: &mut TestRng) -> Tri {
+    let centre = dir(g) * param(g, 1e-2, 1e3);
+    let size = param(g, 1e-6, 1e2);
+    let mut v = [
+        centre + dir(g) * size,
+        centre + dir(g) * size,
+        centre + dir(g) * size,
+    ];
+    match g.below(16) {
+        0 => v[1] = v[0],
+        1 => v[2] = v[0] * 2.0,
+        2 => v[g.below(3) as usize].x = hard(g),
+        _ => {}
     }
-    fn u2(&mut self) -> Vec2 {
-        Vec2::new(self.u1(), self.u1())
+    (v[0], v[1], v[2])
+}
+/// Rectangles (orthogonal edges) of every size, including edge-on ones.
+fn rectangle(g: &mut TestRng) -> Tri {
+    let corner = dir(g) * param(g, 1e-2, 1e3);
+    let f = Frame::from_normal(dir(g));
+    let mut ex = f.t * param(g, 1e-5, 1e2);
+    let ey = f.b * param(g, 1e-5, 1e2);
+    match g.below(16) {
+        // Edge-on: the shading point lies in the rectangle's plane.
+        0 => return (ex * 0.3 + ey * -0.2, ex, ey),
+        1 => ex = Vec3::ZERO,
+        _ => {}
     }
-    /// Log-uniform in [lo, hi], sometimes a hard value.
-    fn param(&mut self, lo: f32, hi: f32) -> f32 {
-        if self.0.next_u32().is_multiple_of(8) {
-            HARD[(self.0.next_u32() % 16) as usize]
-        } else {
-            lo * (hi / lo).powf(self.unit())
-        }
-    }
-    fn dir(&mut self) -> Vec3 {
-        let z = 1.0 - 2.0 * self.unit();
-        let r = (1.0 - z * z).max(0.0).sqrt();
-        let phi = std::f32::consts::TAU * self.unit();
-        Vec3::new(r * phi.cos(), r * phi.sin(), z)
-    }
-    /// Mostly unit directions, sometimes a hard component.
-    fn w(&mut self) -> Vec3 {
-        let mut w = self.dir();
-        if self.0.next_u32().is_multiple_of(8) {
-            w[(self.0.next_u32() % 3) as usize] = HARD[(self.0.next_u32() % 16) as usize];
-        }
-        w
-    }
-    /// Triangles of every size: far and tiny, near and huge, degenerate, with hard components.
-    fn triangle(&mut self) -> Tri {
-        let centre = self.dir() * self.param(1e-2, 1e3);
-        let size = self.param(1e-6, 1e2);
-        let mut v = [
-            centre + self.dir() * size,
-            centre + self.dir() * size,
-            centre + self.dir() * size,
-        ];
-        match self.0.next_u32() % 16 {
-            0 => v[1] = v[0],
-            1 => v[2] = v[0] * 2.0,
-            2 => v[(self.0.next_u32() % 3) as usize].x = HARD[(self.0.next_u32() % 16) as usize],
-            _ => {}
-        }
-        (v[0], v[1], v[2])
-    }
-    /// Rectangles (orthogonal edges) of every size, including edge-on ones.
-    fn rectangle(&mut self) -> Tri {
-        let corner = self.dir() * self.param(1e-2, 1e3);
-        let f = Frame::from_normal(self.dir());
-        let mut ex = f.t * self.param(1e-5, 1e2);
-        let ey = f.b * self.param(1e-5, 1e2);
-        match self.0.next_u32() % 16 {
-            // Edge-on: the shading point lies in the rectangle's plane.
-            0 => return (ex * 0.3 + ey * -0.2, ex, ey),
-            1 => ex = Vec3::ZERO,
-            _ => {}
-        }
-        (corner, ex, ey)
-    }
+    (corner, ex, ey)
 }
 
 fn run<S: Scalar, T: Scalar>(
@@ -126,10 +119,10 @@ fn run<S: Scalar, T: Scalar>(
 
 #[test]
 fn every_warp_matches_its_scalar_twin_bit_for_bit() {
-    let mut g = Gen::new(7);
-    let us: Vec<Vec2> = (0..N).map(|_| g.u2()).collect();
-    let xs: Vec<f32> = (0..N).map(|_| g.u1()).collect();
-    let ws: Vec<Vec3> = (0..N).map(|_| g.w()).collect();
+    let mut g = TestRng::new(7);
+    let us: Vec<Vec2> = (0..N).map(|_| u2(&mut g)).collect();
+    let xs: Vec<f32> = (0..N).map(|_| u1(&mut g)).collect();
+    let ws: Vec<Vec3> = (0..N).map(|_| w(&mut g)).collect();
     let mut f = Vec::new();
     let f = &mut f;
 
@@ -236,7 +229,7 @@ fn every_warp_matches_its_scalar_twin_bit_for_bit() {
         warp::tent_inverse,
     );
 
-    let hs: Vec<f32> = (0..N).map(|_| g.param(1e-8, 2.0)).collect();
+    let hs: Vec<f32> = (0..N).map(|_| param(&mut g, 1e-8, 2.0)).collect();
     run(
         f,
         "cone_h_from_cos",
@@ -296,7 +289,7 @@ fn every_warp_matches_its_scalar_twin_bit_for_bit() {
         warp::uniform_sphere_pdf,
     );
 
-    let ns: Vec<f32> = (0..N).map(|_| g.param(1e-3, 1e7)).collect();
+    let ns: Vec<f32> = (0..N).map(|_| param(&mut g, 1e-3, 1e7)).collect();
     let un: Vec<(Vec2, f32)> = us.iter().copied().zip(ns.iter().copied()).collect();
     run(
         f,
@@ -324,7 +317,7 @@ fn every_warp_matches_its_scalar_twin_bit_for_bit() {
 
     // Spherical polygons: a different triangle in every lane. Directions are drawn towards the
     // polygon half of the time, so inside and outside both occur.
-    let tris: Vec<Tri> = (0..N).map(|_| g.triangle()).collect();
+    let tris: Vec<Tri> = (0..N).map(|_| triangle(&mut g)).collect();
     let st: Vec<(Vec2, Tri)> = us.iter().copied().zip(tris.iter().copied()).collect();
     run(
         f,
@@ -338,14 +331,7 @@ fn every_warp_matches_its_scalar_twin_bit_for_bit() {
         .zip(&ws)
         .map(|(&(u, (a, b, c)), &w)| {
             let toward = warp::spherical_triangle(u, a, b, c).0;
-            (
-                if g.0.next_u32().is_multiple_of(2) {
-                    toward
-                } else {
-                    w
-                },
-                (a, b, c),
-            )
+            (if g.below(2) == 0 { toward } else { w }, (a, b, c))
         })
         .collect();
     run(
@@ -363,7 +349,7 @@ fn every_warp_matches_its_scalar_twin_bit_for_bit() {
         |(w, (a, b, c)): (Vec3, Tri)| warp::spherical_triangle_inverse(w, a, b, c),
     );
 
-    let rects: Vec<Tri> = (0..N).map(|_| g.rectangle()).collect();
+    let rects: Vec<Tri> = (0..N).map(|_| rectangle(&mut g)).collect();
     let sr: Vec<(Vec2, Tri)> = us.iter().copied().zip(rects.iter().copied()).collect();
     run(
         f,
@@ -378,17 +364,7 @@ fn every_warp_matches_its_scalar_twin_bit_for_bit() {
         .map(|(&(u, (s, ex, ey)), &w)| {
             let p = warp::spherical_rectangle(u, s, ex, ey).0;
             let toward = p.normalize_or_zero();
-            (
-                (
-                    if g.0.next_u32().is_multiple_of(2) {
-                        toward
-                    } else {
-                        w
-                    },
-                    p,
-                ),
-                (s, ex, ey),
-            )
+            ((if g.below(2) == 0 { toward } else { w }, p), (s, ex, ey))
         })
         .collect();
     run(
@@ -439,8 +415,8 @@ fn every_warp_matches_its_scalar_twin_bit_for_bit() {
 /// The check itself must be able to fail: a packet function that is off by one ulp in one lane.
 #[test]
 fn negative_control_one_lane_off_by_one_ulp_is_caught() {
-    let mut g = Gen::new(11);
-    let us: Vec<Vec2> = (0..64).map(|_| Vec2::new(g.unit(), g.unit())).collect();
+    let mut g = TestRng::new(11);
+    let us: Vec<Vec2> = (0..64).map(|_| g.u2()).collect();
     let broken = |u: Vec2x8| {
         let mut p = warp::x8::concentric_disk(u);
         let mut x = p.x.to_array();

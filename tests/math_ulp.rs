@@ -14,8 +14,11 @@
 //! --ignored` runs the exhaustive sweeps (every f32 of each domain; a few minutes) that the
 //! documented maxima come from.
 
+mod common;
+
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
 
+use common::TestRng;
 use mcsample::math::Math;
 use mcsample::x8::F32x8;
 
@@ -123,38 +126,23 @@ fn check(name: &str, w: Worst, points: u64) {
     );
 }
 
-/// A small, fast, seedable generator (SplitMix64).
-struct Rng(u64);
+/// Uniform in value over [lo, hi].
+fn uniform(rng: &mut TestRng, lo: f32, hi: f32) -> f32 {
+    rng.range(lo as f64, hi as f64) as f32
+}
 
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-    /// Uniform in [0, 1) as f64.
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
-    }
-    /// Uniform in value over [lo, hi].
-    fn uniform(&mut self, lo: f32, hi: f32) -> f32 {
-        ((lo as f64) + (hi as f64 - lo as f64) * self.unit()) as f32
-    }
-    /// Uniform over the f32 bit patterns in [lo, hi] (so uniform per binade, log-like), either
-    /// sign when `lo < 0 < hi`.
-    fn bits(&mut self, lo: f32, hi: f32) -> f32 {
-        loop {
-            let neg = self.next() & 1 == 1;
-            let (a, b) = if neg { (pz(-hi), -lo) } else { (pz(lo), hi) };
-            if b.is_nan() || b <= 0.0 {
-                continue;
-            }
-            let (ba, bb) = (a.to_bits() as u64, b.to_bits() as u64);
-            let v = f32::from_bits((ba + self.next() % (bb - ba + 1)) as u32);
-            return if neg { -v } else { v };
+/// Uniform over the f32 bit patterns in [lo, hi] (so uniform per binade, log-like), either sign
+/// when `lo < 0 < hi`.
+fn bits(rng: &mut TestRng, lo: f32, hi: f32) -> f32 {
+    loop {
+        let neg = rng.next_u32() & 1 == 1;
+        let (a, b) = if neg { (pz(-hi), -lo) } else { (pz(lo), hi) };
+        if b.is_nan() || b <= 0.0 {
+            continue;
         }
+        let (ba, bb) = (a.to_bits() as u64, b.to_bits() as u64);
+        let v = f32::from_bits((ba + rng.next_u64() % (bb - ba + 1)) as u32);
+        return if neg { -v } else { v };
     }
 }
 
@@ -189,7 +177,7 @@ fn sweep(lo: f32, hi: f32, n: u64) -> impl Iterator<Item = f32> {
 /// Runs `body` over `n` points on both cores, each thread with its own seed.
 fn par<F>(n: u64, body: F) -> Vec<Worst>
 where
-    F: Fn(u64, u64, &mut Rng) -> Vec<Worst> + Sync,
+    F: Fn(u64, u64, &mut TestRng) -> Vec<Worst> + Sync,
 {
     let threads = 2u64;
     std::thread::scope(|s| {
@@ -197,7 +185,7 @@ where
             .map(|t| {
                 let body = &body;
                 s.spawn(move || {
-                    let mut rng = Rng(0x5eed_0000 + t);
+                    let mut rng = TestRng::new(0x5eed_0000 + t);
                     body(t, n / threads, &mut rng)
                 })
             })
@@ -246,7 +234,14 @@ fn near_half_pi_multiples() -> Vec<f32> {
     v
 }
 
-fn unary_points(t: u64, n: u64, rng: &mut Rng, lo: f32, hi: f32, extra: &[(f32, f32)]) -> Vec<f32> {
+fn unary_points(
+    t: u64,
+    n: u64,
+    rng: &mut TestRng,
+    lo: f32,
+    hi: f32,
+    extra: &[(f32, f32)],
+) -> Vec<f32> {
     // The sweep is split between the threads by parity.
     let mut v: Vec<f32> = sweep(lo, hi, n)
         .enumerate()
@@ -257,11 +252,11 @@ fn unary_points(t: u64, n: u64, rng: &mut Rng, lo: f32, hi: f32, extra: &[(f32, 
     let groups = 2 + extra.len() as u64;
     for i in 0..nr {
         let x = match i % groups {
-            0 => rng.uniform(lo, hi),
-            1 => rng.bits(lo, hi),
+            0 => uniform(rng, lo, hi),
+            1 => bits(rng, lo, hi),
             k => {
                 let (a, b) = extra[(k - 2) as usize];
-                rng.uniform(a, b)
+                uniform(rng, a, b)
             }
         };
         v.push(x);
@@ -359,17 +354,20 @@ fn atan2_points(n_total: u64) -> Worst {
             match i % 3 {
                 // Uniform angle, log-uniform radius over 2^±120.
                 0 => {
-                    let th = std::f64::consts::PI * (2.0 * rng.unit() - 1.0);
-                    let rad = 2f64.powf(240.0 * rng.unit() - 120.0);
+                    let th = std::f64::consts::PI * (2.0 * rng.range(0.0, 1.0) - 1.0);
+                    let rad = 2f64.powf(240.0 * rng.range(0.0, 1.0) - 120.0);
                     one((rad * th.sin()) as f32, (rad * th.cos()) as f32);
                 }
                 // Independent random bit patterns (any finite magnitudes).
-                1 => one(rng.bits(-f32::MAX, f32::MAX), rng.bits(-f32::MAX, f32::MAX)),
+                1 => one(
+                    bits(rng, -f32::MAX, f32::MAX),
+                    bits(rng, -f32::MAX, f32::MAX),
+                ),
                 // Near the diagonal and near tan(π/8), where the reductions switch.
                 _ => {
-                    let x = rng.bits(-1e30, 1e30);
-                    let k = [1.0f32, 0.414_213_57, 2.414_213_6][(rng.next() % 3) as usize];
-                    let y = x * k * (1.0 + (rng.unit() as f32 - 0.5) * 1e-5);
+                    let x = bits(rng, -1e30, 1e30);
+                    let k = [1.0f32, 0.414_213_57, 2.414_213_6][rng.below(3) as usize];
+                    let y = x * k * (1.0 + (rng.range(0.0, 1.0) as f32 - 0.5) * 1e-5);
                     one(y, x);
                 }
             }
@@ -628,13 +626,13 @@ fn exhaustive_unary() {
 
 #[test]
 fn sin_cos_beyond_domain() {
-    let mut rng = Rng(7);
+    let mut rng = TestRng::new(7);
     let mut worst: f64 = 0.0;
     for i in 0..(1u32 << 20) {
         let x = if i % 2 == 0 {
-            rng.bits(SIN_COS_DOMAIN, f32::MAX)
+            bits(&mut rng, SIN_COS_DOMAIN, f32::MAX)
         } else {
-            rng.uniform(SIN_COS_DOMAIN, 4.2e6)
+            uniform(&mut rng, SIN_COS_DOMAIN, 4.2e6)
         };
         let x = if i % 4 < 2 { x } else { -x };
         let (s, c) = <f32 as Math>::sin_cos(x);
@@ -739,9 +737,9 @@ fn specials_trig() {
     expect("sin2pi -0", s2(-0.0).0, 0.0);
     expect("cos2pi -0", s2(-0.0).1, 1.0);
     // Symmetry: sin is odd and cos even in u, bit for bit.
-    let mut rng = Rng(3);
+    let mut rng = TestRng::new(3);
     for _ in 0..10000 {
-        let u = rng.bits(-1e7, 1e7);
+        let u = bits(&mut rng, -1e7, 1e7);
         let (a, b) = (s2(u), s2(-u));
         assert!(same(a.0, -b.0) || (a.0 == 0.0 && b.0 == 0.0), "{u}");
         assert!(same(a.1, b.1), "{u}");
@@ -946,7 +944,7 @@ fn specials_exp() {
 // ---------------------------------------------------------------------------------------------
 // Scalar and packet agree bit for bit
 
-fn interesting(rng: &mut Rng, i: u32, lo: f32, hi: f32) -> f32 {
+fn interesting(rng: &mut TestRng, i: u32, lo: f32, hi: f32) -> f32 {
     const SPECIAL: [f32; 14] = [
         0.0,
         -0.0,
@@ -964,15 +962,15 @@ fn interesting(rng: &mut Rng, i: u32, lo: f32, hi: f32) -> f32 {
         f32::MIN_POSITIVE,
     ];
     match i % 8 {
-        0 => SPECIAL[(rng.next() % SPECIAL.len() as u64) as usize],
-        1 => f32::from_bits(rng.next() as u32),
-        2 | 3 => rng.bits(lo, hi),
-        _ => rng.uniform(lo, hi),
+        0 => SPECIAL[rng.below(SPECIAL.len() as u32) as usize],
+        1 => f32::from_bits(rng.next_u32()),
+        2 | 3 => bits(rng, lo, hi),
+        _ => uniform(rng, lo, hi),
     }
 }
 
 fn lanes_unary(name: &str, lo: f32, hi: f32, f: fn(f32) -> f32, g: fn(F32x8) -> F32x8) {
-    let mut rng = Rng(0xb175 ^ name.len() as u64);
+    let mut rng = TestRng::new(0xb175 ^ name.len() as u64);
     for k in 0..(1u32 << 13) {
         let xs: [f32; 8] = std::array::from_fn(|i| interesting(&mut rng, k * 8 + i as u32, lo, hi));
         let v = g(F32x8::new(xs)).to_array();
@@ -1071,7 +1069,7 @@ fn lanes_equal_scalar() {
         <F32x8 as Math>::exp_m1,
     );
 
-    let mut rng = Rng(0xa7a2);
+    let mut rng = TestRng::new(0xa7a2);
     for k in 0..(1u32 << 13) {
         let ys: [f32; 8] =
             std::array::from_fn(|i| interesting(&mut rng, k * 8 + i as u32, -1e3, 1e3));

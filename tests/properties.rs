@@ -307,11 +307,10 @@ proptest! {
     #[test]
     fn spherical_triangle_samples_inside(t in triangle(), seed in any::<u64>()) {
         let (a, b, c) = (t[0], t[1], t[2]);
-        let mut rng = Pcg::new(seed);
+        let mut rng = TestRng::new(seed);
         let mut consistent = 0;
         for _ in 0..32 {
             let u = rng.u2();
-            let u = Vec2::new(u[0], u[1]);
             let (w, pdf) = warp::spherical_triangle(u, a, b, c);
             check_unit(w)?;
             prop_assert!(pdf > 0.0 && pdf.is_finite(), "u={:?} pdf {}", u, pdf);
@@ -335,11 +334,10 @@ proptest! {
     #[test]
     fn spherical_rectangle_samples_inside(r in rectangle(), seed in any::<u64>()) {
         let (corner, ex, ey) = (r[0], r[1], r[2]);
-        let mut rng = Pcg::new(seed);
+        let mut rng = TestRng::new(seed);
         let mut consistent = 0;
         for _ in 0..32 {
             let u = rng.u2();
-            let u = Vec2::new(u[0], u[1]);
             let (p, pdf) = warp::spherical_rectangle(u, corner, ex, ey);
             prop_assert!(p.is_finite(), "u={:?} p={:?}", u, p);
             prop_assert!(pdf > 0.0 && pdf.is_finite(), "u={:?} pdf {}", u, pdf);

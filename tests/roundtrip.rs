@@ -5,17 +5,17 @@
 //! and is not compared: u₁ at the disk's centre or a lobe's axis, u₀ at the spherical triangle's
 //! apex B (u₁ = 0).
 
+mod common;
+
+use common::TestRng;
 use glam::{Vec2, Vec3};
 use mcsample::warp;
-use rand_core::Rng;
-use rand_pcg::Pcg32;
 
 const N: usize = 1 << 18;
 
 fn us() -> Vec<Vec2> {
-    let mut rng = Pcg32::new(99, 17);
-    let mut f = move || (rng.next_u32() >> 8) as f32 * (1.0 / 16_777_216.0);
-    let mut v: Vec<Vec2> = (0..N).map(|_| Vec2::new(f(), f())).collect();
+    let mut rng = TestRng::new(99);
+    let mut v: Vec<Vec2> = (0..N).map(|_| rng.u2()).collect();
     // The edges of the square, where the maps change branch.
     let edge = [0.0, 0.5, 1e-7, 0.25, 0.75, warp::ONE_MINUS_EPS];
     for &a in &edge {

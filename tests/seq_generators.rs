@@ -3,23 +3,15 @@
 //! generator promises (with negative controls that break a permutation), and the documented
 //! behaviour on extreme inputs.
 
+mod common;
+
+use common::TestRng;
 use glam::Vec2;
 use mcsample::seq::{
     self, MAX_STRATA,
     quality::{NetViolation, net_violation},
 };
 use mcsample::verify::check_lanes;
-
-struct SplitMix(u64);
-impl SplitMix {
-    fn next_u32(&mut self) -> u32 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        ((z ^ (z >> 31)) >> 32) as u32
-    }
-}
 
 // ---------------------------------------------------------------------------------------------
 // An independent Sobol reference, written the textbook way: natural bit order, direction numbers
@@ -98,12 +90,12 @@ fn ref_unit(x: u32) -> f32 {
 
 #[test]
 fn sobol_matches_the_textbook_reference() {
-    let mut rng = SplitMix(1);
+    let mut rng = TestRng::new(1);
     for k in 0..200_000u32 {
         let (i, d, s) = if k < 4096 {
             (k, k % 9, 0)
         } else {
-            (rng.next_u32(), rng.next_u32() % 64, rng.next_u32())
+            (rng.next_u32(), rng.below(64), rng.next_u32())
         };
         let want = ref_unit(ref_sobol(i, d, s));
         let got = seq::sobol(i, d, s);
@@ -206,7 +198,7 @@ const GOLDEN: [&[u32]; 6] = [
 
 #[test]
 fn packets_equal_scalars_bit_for_bit() {
-    let mut rng = SplitMix(2);
+    let mut rng = TestRng::new(2);
     let mut indices: Vec<u32> = (0..2048).map(|_| rng.next_u32()).collect();
     indices.extend(0..2048);
     indices.extend([
@@ -218,7 +210,7 @@ fn packets_equal_scalars_bit_for_bit() {
     ]);
     let counts = [0u32, 1, 2, 3, 16, 100, 4096, 65_537, MAX_STRATA, u32::MAX];
     for round in 0..40 {
-        let (d, s) = (rng.next_u32() % 64, rng.next_u32());
+        let (d, s) = (rng.below(64), rng.next_u32());
         let n = counts[round % counts.len()];
         let (nx, ny) = (
             counts[round % counts.len()].min(1 << (round % 12)),
@@ -557,7 +549,7 @@ fn sobol_dimension_sets_are_decorrelated() {
 
 #[test]
 fn extreme_indices_stay_below_one() {
-    let mut rng = SplitMix(5);
+    let mut rng = TestRng::new(5);
     let check = |v: f32, what: &str| assert!((0.0..1.0).contains(&v), "{what}: {v}");
     for k in 0..20_000u32 {
         let i = if k < 256 {
@@ -566,8 +558,8 @@ fn extreme_indices_stay_below_one() {
             rng.next_u32()
         };
         let (d, s) = (rng.next_u32(), rng.next_u32());
-        let n = rng.next_u32() >> (rng.next_u32() % 32);
-        let (nx, ny) = (rng.next_u32() % 5000, rng.next_u32() % 5000);
+        let n = rng.next_u32() >> rng.below(32);
+        let (nx, ny) = (rng.below(5000), rng.below(5000));
         check(seq::stratified(i, n, d, s), "stratified");
         check(seq::latin_hypercube(i, n, d, s), "latin");
         for p in [

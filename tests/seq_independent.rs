@@ -1,6 +1,9 @@
 //! `seq::independent`: golden values, an independent re-implementation of the hash, packet vs
 //! scalar bit equality, the [0, 1) range, moments and χ² uniformity, with negative controls.
 
+mod common;
+
+use common::TestRng;
 use glam::DVec2;
 use mcsample::seq::{self, U32Lane};
 use mcsample::verify::{ChiSquare, check_lanes};
@@ -29,21 +32,6 @@ fn ref_unit(h: u32) -> f32 {
     ((h >> 8) as f64 / 16_777_216.0) as f32
 }
 
-/// SplitMix64, for test inputs.
-struct SplitMix(u64);
-impl SplitMix {
-    fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-    fn next_u32(&mut self) -> u32 {
-        (self.next_u64() >> 32) as u32
-    }
-}
-
 #[test]
 fn lowbias32_reference_is_a_bijection_on_a_sample() {
     // Sanity of the reference itself: no collisions among 2^16 consecutive inputs, and 0 ↦ 0.
@@ -56,14 +44,14 @@ fn lowbias32_reference_is_a_bijection_on_a_sample() {
 
 #[test]
 fn hash_matches_independent_reimplementation() {
-    let mut rng = SplitMix(1);
+    let mut rng = TestRng::new(1);
     let mut specials = vec![
         (0, 0, 0),
         (u32::MAX, 0, 0),
         (u32::MAX, u32::MAX, u32::MAX),
         (1, 2, 3),
     ];
-    specials.extend((0..100_000).map(|_| (rng.next_u32(), rng.next_u32() % 64, rng.next_u32())));
+    specials.extend((0..100_000).map(|_| (rng.next_u32(), rng.below(64), rng.next_u32())));
     for (i, d, s) in specials {
         let h = ref_hash3(i, d, s);
         assert_eq!(seq::hash3(i, d, s), h, "hash3({i}, {d}, {s})");
@@ -105,7 +93,7 @@ fn unit_conversion_is_exact_and_below_one() {
     assert_eq!(u32::MAX.to_unit_f32(), 1.0 - 1.0 / 16_777_216.0);
     assert_eq!(0u32.to_unit_f32().to_bits(), 0);
     assert_eq!(0x100u32.to_unit_f32(), 1.0 / 16_777_216.0);
-    let mut rng = SplitMix(2);
+    let mut rng = TestRng::new(2);
     for x in (0..1_000_000).map(|_| rng.next_u32()).chain([
         0xff,
         0x1ff,
@@ -133,11 +121,11 @@ fn unit_conversion_is_exact_and_below_one() {
 
 #[test]
 fn packet_equals_scalar_bit_for_bit() {
-    let mut rng = SplitMix(3);
+    let mut rng = TestRng::new(3);
     let mut indices: Vec<u32> = (0..4096).map(|_| rng.next_u32()).collect();
     indices.extend([0, 1, u32::MAX, u32::MAX - 1, 0x8000_0000, 0xff, 0x100, 7]);
     for _ in 0..64 {
-        let (d, s) = (rng.next_u32() % 256, rng.next_u32());
+        let (d, s) = (rng.below(256), rng.next_u32());
         check_lanes::<u32, f32>(
             &indices,
             |i| seq::x8::independent(i, d, s),
@@ -169,7 +157,7 @@ fn packet_check_catches_a_wrong_lane() {
 
 #[test]
 fn last_index_is_below_one() {
-    let mut rng = SplitMix(4);
+    let mut rng = TestRng::new(4);
     for k in 0..100_000u32 {
         let (d, s) = if k < 1000 {
             (k, k)
@@ -258,7 +246,7 @@ fn chi_square_rejects_correlated_dimensions() {
 /// The largest deviation from ½, over input bits of (index, dim, seed) and output bits, of the
 /// probability that flipping the input bit flips the output bit, over `n` random inputs.
 fn worst_avalanche(h: impl Fn(u32, u32, u32) -> u32, n: u32) -> f64 {
-    let mut rng = SplitMix(5);
+    let mut rng = TestRng::new(5);
     let mut flips = [[0u32; 32]; 96];
     for _ in 0..n {
         let x = [rng.next_u32(), rng.next_u32(), rng.next_u32()];

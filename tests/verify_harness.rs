@@ -2,17 +2,18 @@
 //! references, the χ² harness on correct samplers (positive controls) and broken ones (negative
 //! controls), and the lane-equality check.
 
+mod common;
+
 use std::f32::consts::PI as PI32;
 use std::f64::consts::PI;
 use std::time::Instant;
 
+use common::TestRng;
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use mcsample::verify::{
     ChiSquare, ChiSquareResult, check_lanes, chi2_sf, gamma_p, gamma_q, ln_gamma, sidak_alpha,
 };
 use mcsample::x8::{F32x8, U32x8, Vec2x8, Vec3x8};
-use rand_core::Rng;
-use rand_pcg::Pcg32;
 
 // ---------------------------------------------------------------------------------------------
 // Survival function
@@ -205,15 +206,6 @@ fn sidak_correction() {
 // ---------------------------------------------------------------------------------------------
 // Chi-square harness: samplers
 
-fn u01(rng: &mut Pcg32) -> f32 {
-    (rng.next_u32() >> 8) as f32 * (1.0 / 16_777_216.0)
-}
-
-fn u2(rng: &mut Pcg32) -> Vec2 {
-    let x = u01(rng);
-    Vec2::new(x, u01(rng))
-}
-
 fn polar_disk(u: Vec2) -> Vec2 {
     let (s, c) = (2.0 * PI32 * u.y).sin_cos();
     u.x.sqrt() * Vec2::new(c, s)
@@ -269,8 +261,8 @@ fn timed<T>(f: impl FnOnce() -> T) -> (T, f64) {
 
 #[test]
 fn accepts_uniform_square() {
-    let mut rng = Pcg32::new(0x853c_49e6_748f_ea9b, 0xda3e_39cb_94b9_5bdb);
-    let (r, t) = timed(|| ChiSquare::square().run(|_| u2(&mut rng), |_: DVec2| 1.0));
+    let mut rng = TestRng::new(0);
+    let (r, t) = timed(|| ChiSquare::square().run(|_| rng.u2(), |_: DVec2| 1.0));
     assert_eq!(r.res, (101, 101));
     assert_eq!(r.samples, 1_000_000);
     accept("uniform square", &r, t);
@@ -278,16 +270,15 @@ fn accepts_uniform_square() {
 
 #[test]
 fn accepts_uniform_disk() {
-    let mut rng = Pcg32::new(1, 2);
-    let (r, t) = timed(|| ChiSquare::disk().run(|_| polar_disk(u2(&mut rng)), UNIFORM_DISK));
+    let mut rng = TestRng::new(1);
+    let (r, t) = timed(|| ChiSquare::disk().run(|_| polar_disk(rng.u2()), UNIFORM_DISK));
     accept("uniform disk (r = sqrt u)", &r, t);
 }
 
 #[test]
 fn accepts_uniform_sphere() {
-    let mut rng = Pcg32::new(3, 4);
-    let (r, t) =
-        timed(|| ChiSquare::sphere().run(|_| uniform_sphere(u2(&mut rng)), UNIFORM_SPHERE));
+    let mut rng = TestRng::new(3);
+    let (r, t) = timed(|| ChiSquare::sphere().run(|_| uniform_sphere(rng.u2()), UNIFORM_SPHERE));
     assert_eq!(r.res, (50, 101));
     accept("uniform sphere (z = 1 - 2u)", &r, t);
 }
@@ -296,10 +287,10 @@ fn accepts_uniform_sphere() {
 /// and receive nothing, and the equator's row (cut in its middle) is integrated exactly.
 #[test]
 fn accepts_cosine_hemisphere() {
-    let mut rng = Pcg32::new(5, 6);
+    let mut rng = TestRng::new(5);
     let (r, t) = timed(|| {
         ChiSquare::sphere().run(
-            |_| cosine_hemisphere(u2(&mut rng)),
+            |_| cosine_hemisphere(rng.u2()),
             |w: DVec3| w.z.max(0.0) / PI,
         )
     });
@@ -315,39 +306,38 @@ fn accepts_cosine_hemisphere() {
 
 #[test]
 fn rejects_disk_with_r_equal_u() {
-    let mut rng = Pcg32::new(7, 8);
-    let (r, t) = timed(|| ChiSquare::disk().run(|_| polar_disk_broken(u2(&mut rng)), UNIFORM_DISK));
+    let mut rng = TestRng::new(7);
+    let (r, t) = timed(|| ChiSquare::disk().run(|_| polar_disk_broken(rng.u2()), UNIFORM_DISK));
     assert_eq!(r.invalid_samples, 0);
     reject("disk with r = u", &r, t);
 }
 
 #[test]
 fn rejects_pdf_scaled_by_1_05() {
-    let mut rng = Pcg32::new(9, 10);
+    let mut rng = TestRng::new(9);
     let (r, t) =
-        timed(|| ChiSquare::disk().run(|_| polar_disk(u2(&mut rng)), |p| 1.05 * UNIFORM_DISK(p)));
+        timed(|| ChiSquare::disk().run(|_| polar_disk(rng.u2()), |p| 1.05 * UNIFORM_DISK(p)));
     assert!((r.pdf_integral - 1.05).abs() < 1e-9, "{r}");
     reject("uniform disk against 1.05/pi", &r, t);
 }
 
 #[test]
 fn rejects_cosine_sampler_against_uniform_sphere_pdf() {
-    let mut rng = Pcg32::new(11, 12);
-    let (r, t) =
-        timed(|| ChiSquare::sphere().run(|_| cosine_hemisphere(u2(&mut rng)), UNIFORM_SPHERE));
+    let mut rng = TestRng::new(11);
+    let (r, t) = timed(|| ChiSquare::sphere().run(|_| cosine_hemisphere(rng.u2()), UNIFORM_SPHERE));
     reject("cosine hemisphere against uniform sphere pdf", &r, t);
 }
 
 #[test]
 fn rejects_a_single_nan_sample() {
-    let mut rng = Pcg32::new(13, 14);
+    let mut rng = TestRng::new(13);
     let (r, t) = timed(|| {
         ChiSquare::square().run(
             |i| {
                 if i == 123_456 {
                     Vec2::new(f32::NAN, 0.5)
                 } else {
-                    u2(&mut rng)
+                    rng.u2()
                 }
             },
             |_: DVec2| 1.0,
@@ -361,18 +351,18 @@ fn rejects_a_single_nan_sample() {
 
 #[test]
 fn rejects_samples_outside_the_domain() {
-    let mut rng = Pcg32::new(15, 16);
+    let mut rng = TestRng::new(15);
     let r = ChiSquare::disk()
         .samples(100_000)
-        .run(|_| 1.01 * polar_disk(u2(&mut rng)), UNIFORM_DISK);
+        .run(|_| 1.01 * polar_disk(rng.u2()), UNIFORM_DISK);
     assert!(r.invalid_samples > 1000, "{r}");
     reject("disk of radius 1.01", &r, 0.0);
 
     // Directions that are not unit vectors are outside the sphere.
-    let mut rng = Pcg32::new(17, 18);
+    let mut rng = TestRng::new(17);
     let r = ChiSquare::sphere()
         .samples(100_000)
-        .run(|_| 1.001 * uniform_sphere(u2(&mut rng)), UNIFORM_SPHERE);
+        .run(|_| 1.001 * uniform_sphere(rng.u2()), UNIFORM_SPHERE);
     assert_eq!(r.invalid_samples, 100_000, "{r}");
     reject("sphere of radius 1.001", &r, 0.0);
 }
@@ -381,9 +371,9 @@ fn rejects_samples_outside_the_domain() {
 fn rejects_samples_where_the_pdf_is_zero() {
     // A uniform sphere sampler against the uniform *hemisphere* pdf: half the samples land in
     // cells that expect nothing (and the statistic alone would be infinite there).
-    let mut rng = Pcg32::new(19, 20);
+    let mut rng = TestRng::new(19);
     let r = ChiSquare::sphere().samples(100_000).run(
-        |_| uniform_sphere(u2(&mut rng)),
+        |_| uniform_sphere(rng.u2()),
         |w: DVec3| if w.z >= 0.0 { 1.0 / (2.0 * PI) } else { 0.0 },
     );
     assert!(r.samples_in_zero_cells > 40_000, "{r}");
@@ -392,9 +382,9 @@ fn rejects_samples_where_the_pdf_is_zero() {
 
 #[test]
 fn rejects_a_pdf_that_is_nan_somewhere() {
-    let mut rng = Pcg32::new(21, 22);
+    let mut rng = TestRng::new(21);
     let r = ChiSquare::disk().samples(100_000).run(
-        |_| polar_disk(u2(&mut rng)),
+        |_| polar_disk(rng.u2()),
         |p: DVec2| if p.x > 0.9 { f64::NAN } else { 1.0 / PI },
     );
     assert!(r.invalid_pdf_nodes > 0, "{r}");
@@ -404,12 +394,12 @@ fn rejects_a_pdf_that_is_nan_somewhere() {
 /// Coarser settings behave: few samples make most cells small, and pooling keeps the test valid.
 #[test]
 fn pools_small_cells() {
-    let mut rng = Pcg32::new(23, 24);
+    let mut rng = TestRng::new(23);
     let r = ChiSquare::disk()
         .samples(20_000)
         .res(101, 101)
         .ires(4)
-        .run(|_| polar_disk(u2(&mut rng)), UNIFORM_DISK);
+        .run(|_| polar_disk(rng.u2()), UNIFORM_DISK);
     println!("pooled: {r}");
     assert_eq!(r.pooled_cells, 101 * 101); // every cell expects ~1.96
     assert!(r.dof > 3000 && r.dof < 4100, "{r}");
@@ -436,9 +426,9 @@ fn packet_fn((p, s): (Vec2x8, F32x8)) -> (Vec3x8, F32x8) {
 }
 
 fn lane_inputs(n: usize) -> Vec<(Vec2, f32)> {
-    let mut rng = Pcg32::new(25, 26);
+    let mut rng = TestRng::new(25);
     (0..n)
-        .map(|_| (u2(&mut rng) * 4.0 - 2.0, u01(&mut rng) * 3.0 - 1.0))
+        .map(|_| (rng.u2() * 4.0 - 2.0, rng.u01() * 3.0 - 1.0))
         .collect()
 }
 
@@ -450,7 +440,8 @@ fn check_lanes_accepts_identical_functions() {
     assert_eq!(check_lanes(&inputs[..13], packet_fn, scalar_fn), Ok(16));
     assert_eq!(check_lanes(&inputs[..0], packet_fn, scalar_fn), Ok(0));
     // u32 packets too.
-    let ints: Vec<u32> = (0..77u32).map(|i| i.wrapping_mul(0x9E37_79B9)).collect();
+    let mut rng = TestRng::new(27);
+    let ints: Vec<u32> = (0..77).map(|_| rng.next_u32()).collect();
     let r = check_lanes(&ints, |x: U32x8| x ^ (x >> 7), |x: u32| x ^ (x >> 7));
     assert_eq!(r, Ok(80));
 }

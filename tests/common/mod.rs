@@ -1,7 +1,10 @@
-//! Independent f64 references for the warps, written from the textbook formulas in
-//! REFERENCES.md §1 (not from the crate's generic code, and without calling into `mcsample`), and
-//! small helpers the accuracy, hard-case and property tests share: a fixed-seed PCG32, stratified
-//! grids and f64 vector arithmetic.
+//! Independent f64 references for the warps, written from the textbook formulas of the papers
+//! named at each function: Shirley and Chiu 1997 (concentric disk), Malley's method (cosine
+//! hemisphere), Heitz 2019 (triangle), Arvo 1995 and Van Oosterom and Strackee 1983 (spherical
+//! triangle and its solid angle), Ureña et al. 2013 (spherical rectangle), Duff et al. 2017
+//! (orthonormal frame). They are not written from the crate's generic code and do not call into
+//! `mcsample`. Beside them, small helpers the tests share: the tests' one random number generator
+//! ([`TestRng`]), stratified grids and f64 vector arithmetic.
 //!
 //! The references deliberately use the *plain* forms where f64 has the precision to spare
 //! (Shirley–Chiu's four-branch concentric map, acos angles, √(1−z²) radii), so that a shared
@@ -10,6 +13,8 @@
 #![allow(dead_code)]
 
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, TAU};
+
+use glam::Vec2;
 
 /// 1 − 2⁻²⁴, the largest f32 below 1.
 pub const ONE_MINUS_EPS_F32: f32 = 1.0 - 1.0 / 16_777_216.0;
@@ -83,49 +88,48 @@ pub fn turn_dist(a: f64, b: f64) -> f64 {
 // ---------------------------------------------------------------------------------------------
 // Random numbers and input sets
 
-/// PCG32 (O'Neill's XSH-RR output on a 64-bit LCG), fixed seed: the tests are reproducible.
+/// The tests' one random number generator: PCG32 (O'Neill 2014: XSH-RR output on a 64-bit LCG),
+/// the `rand_pcg` implementation, with a fixed seed so that every run draws the same inputs.
+///
+/// `new(seed)` is `Pcg32::new(0x853c_49e6_748f_ea9b ^ seed, seed)`, stream `seed`: the sequence
+/// of the PCG reference's `pcg32_srandom(0x853c_49e6_748f_ea9b ^ seed, seed)` and of the
+/// hand-written PCG32 this file held before, so the inputs drawn from it, and the error bounds
+/// measured on them (accuracy.rs), did not change.
 #[derive(Clone, Debug)]
-pub struct Pcg {
-    state: u64,
-    inc: u64,
-}
+pub struct TestRng(rand_pcg::Pcg32);
 
-impl Pcg {
+impl TestRng {
     pub fn new(seed: u64) -> Self {
-        let mut r = Pcg {
-            state: 0,
-            inc: (seed << 1) | 1,
-        };
-        r.next_u32();
-        r.state = r.state.wrapping_add(0x853c_49e6_748f_ea9b ^ seed);
-        r.next_u32();
-        r
+        TestRng(rand_pcg::Pcg32::new(0x853c_49e6_748f_ea9b ^ seed, seed))
     }
     pub fn next_u32(&mut self) -> u32 {
-        let old = self.state;
-        self.state = old
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(self.inc);
-        let xorshifted = (((old >> 18) ^ old) >> 27) as u32;
-        let rot = (old >> 59) as u32;
-        xorshifted.rotate_right(rot)
+        rand_core::Rng::next_u32(&mut self.0)
     }
-    /// A 24-bit float in [0, 1), the generators' output format.
-    pub fn u24(&mut self) -> f32 {
+    /// Two outputs, the first in the low half.
+    pub fn next_u64(&mut self) -> u64 {
+        rand_core::Rng::next_u64(&mut self.0)
+    }
+    /// A 24-bit float in [0, 1), the generators' output format: (x >> 8)·2⁻²⁴.
+    pub fn u01(&mut self) -> f32 {
         (self.next_u32() >> 8) as f32 * (1.0 / 16_777_216.0)
     }
-    /// A pair of 24-bit floats in [0, 1).
-    pub fn u2(&mut self) -> [f32; 2] {
-        [self.u24(), self.u24()]
+    /// A pair of 24-bit floats in [0, 1), x drawn first.
+    pub fn u2(&mut self) -> Vec2 {
+        let x = self.u01();
+        Vec2::new(x, self.u01())
     }
-    /// Uniform f64 in [lo, hi).
+    /// Uniform in 0..n (by a modulo: the bias, below n/2³², does not matter to the tests).
+    pub fn below(&mut self, n: u32) -> u32 {
+        self.next_u32() % n
+    }
+    /// Uniform f64 in [lo, hi), from 53 random bits.
     pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
         let x = ((self.next_u32() as u64) << 21 ^ (self.next_u32() as u64 >> 11)) as f64
             * (1.0 / 9_007_199_254_740_992.0);
         lo + (hi - lo) * x
     }
-    /// A uniformly random unit vector (f64).
-    pub fn unit(&mut self) -> D3 {
+    /// A uniformly random unit vector (f64): z uniform in [−1, 1), φ uniform in [0, 2π).
+    pub fn unit_vector(&mut self) -> D3 {
         let z = self.range(-1.0, 1.0);
         let phi = self.range(0.0, TAU);
         let r = (1.0 - z * z).max(0.0).sqrt();
@@ -176,9 +180,9 @@ pub fn border() -> Vec<[f32; 2]> {
 /// the border set (131,172 inputs).
 pub fn accuracy_inputs(seed: u64) -> Vec<[f32; 2]> {
     let mut v = grid(256);
-    let mut rng = Pcg::new(seed);
+    let mut rng = TestRng::new(seed);
     for _ in 0..(1 << 16) {
-        v.push(rng.u2());
+        v.push(rng.u2().to_array());
     }
     v.extend(border());
     v
@@ -618,7 +622,8 @@ pub fn rect_coords(p: D3, corner: D3, ex: D3, ey: D3) -> D3 {
 /// silently (each reference against an independent fact).
 pub fn self_check() -> Result<(), String> {
     let mut err = Vec::new();
-    // Concentric: the exact values of REFERENCES §1.
+    // Concentric (Shirley and Chiu 1997): u = (0, 0) is a = b = −1, so r = 1 and φ = 5π/4;
+    // u = (0, ½) is a = −1, b = 0, so r = 1 and φ = π.
     let p = concentric_disk([0.0, 0.0]);
     if dist2(p, [-FRAC_PI_4.cos(), -FRAC_PI_4.sin()]) > 1e-15 {
         err.push(format!("concentric(0,0) = {p:?}"));
@@ -628,9 +633,9 @@ pub fn self_check() -> Result<(), String> {
         err.push(format!("concentric(0,½) = {p:?}"));
     }
     // Concentric inverse undoes the map.
-    let mut rng = Pcg::new(99);
+    let mut rng = TestRng::new(99);
     for _ in 0..1000 {
-        let u = d2(rng.u2());
+        let u = d2(rng.u2().to_array());
         let back = concentric_disk_inverse(concentric_disk(u));
         if dist2(back, u) > 1e-12 {
             err.push(format!("concentric inverse at {u:?}: {back:?}"));
@@ -643,7 +648,7 @@ pub fn self_check() -> Result<(), String> {
         err.push(format!("octant Ω = {o}"));
     }
     for _ in 0..100 {
-        let (a, b, c) = (rng.unit(), rng.unit(), rng.unit());
+        let (a, b, c) = (rng.unit_vector(), rng.unit_vector(), rng.unit_vector());
         let (g, v) = (
             triangle_solid_angle_girard(a, b, c),
             triangle_solid_angle_vos(a, b, c),

@@ -333,12 +333,8 @@ impl Sampler {
             }
             Sampler::Tent => {
                 // A pair of tents is one 2D sample: NaN in either coordinate drops both.
-                let x = V3::new(warp::tent(u.x), warp::tent(u.y), L::c(0.0));
-                let x = V3::select(
-                    u.any_nan(),
-                    V3::new(x.x, x.y, L::c(0.0)).nan_where(u.any_nan()),
-                    x,
-                );
+                let t = V2::new(warp::tent(u.x), warp::tent(u.y)).nan_where(u.any_nan());
+                let x = V3::new(t.x, t.y, L::c(0.0));
                 (x, warp::tent_pdf(x.x) * warp::tent_pdf(x.y))
             }
             Sampler::SphericalTriangle { v } => {
@@ -463,12 +459,25 @@ impl Sampler {
     /// lobes and cones), the square through an equal-area map (triangle, tent pair), or the
     /// light's own parameter square ([`PlanarLight`]).
     pub fn chi_square(&self, samples: usize, u: impl Fn(usize) -> Vec2) -> ChiSquareResult {
-        let s = *self;
+        self.chi_square_against(self, samples, u)
+    }
+
+    /// [`chi_square`](Self::chi_square) of this sampler's samples against `judge`'s pdf, through
+    /// the same domain and binning: with a different judge, the negative control that shows
+    /// the test rejects a wrong pdf.
+    pub fn chi_square_against(
+        &self,
+        judge: &Sampler,
+        samples: usize,
+        u: impl Fn(usize) -> Vec2,
+    ) -> ChiSquareResult {
+        let (s, judge) = (*self, *judge);
         let sample = move |i: usize| s.sample(u(i)).0;
         match s {
-            Sampler::ConcentricDisk | Sampler::PolarDisk => ChiSquare::disk()
-                .samples(samples)
-                .run(|i| sample(i).truncate(), |p: DVec2| s.pdf(p.extend(0.0))),
+            Sampler::ConcentricDisk | Sampler::PolarDisk => ChiSquare::disk().samples(samples).run(
+                |i| sample(i).truncate(),
+                |p: DVec2| judge.pdf(p.extend(0.0)),
+            ),
             Sampler::UniformHemisphere
             | Sampler::CosineHemisphere
             | Sampler::UniformSphere
@@ -485,7 +494,7 @@ impl Sampler {
                 Cap::z(hs).test(
                     ChiSquare::sphere().samples(samples).ires(6),
                     sample,
-                    |w: DVec3| s.pdf(w.as_vec3()) as f64,
+                    |w: DVec3| judge.pdf(w.as_vec3()) as f64,
                 )
             }
             Sampler::UniformTriangle => ChiSquare::square().samples(samples).run(
@@ -494,7 +503,7 @@ impl Sampler {
                     triangle_to_square(b.x, b.y)
                 },
                 // The equal-area map (s, f) = ((b₀+b₁)², b₁/(b₀+b₁)) has Jacobian ½.
-                |st: DVec2| 0.5 * s.pdf(square_to_triangle(st).extend(0.0).as_vec3()) as f64,
+                |st: DVec2| 0.5 * judge.pdf(square_to_triangle(st).extend(0.0).as_vec3()) as f64,
             ),
             Sampler::Tent => ChiSquare::square().samples(samples).run(
                 |i| {
@@ -503,18 +512,18 @@ impl Sampler {
                 },
                 |p: DVec2| {
                     let x = (2.0 * p - 1.0).as_vec2().extend(0.0);
-                    4.0 * s.pdf(x) as f64
+                    4.0 * judge.pdf(x) as f64
                 },
             ),
             Sampler::SphericalTriangle { v } => PlanarLight::triangle(v[0], v[1], v[2]).test(
                 ChiSquare::square().samples(samples),
                 sample,
-                |w: DVec3| s.pdf(w.as_vec3()) as f64,
+                |w: DVec3| judge.pdf(w.as_vec3()) as f64,
             ),
             Sampler::SphericalRectangle { v } => PlanarLight::parallelogram(v[0], v[1], v[2]).test(
                 ChiSquare::square().samples(samples),
                 sample,
-                |w: DVec3| s.pdf(w.as_vec3()) as f64,
+                |w: DVec3| judge.pdf(w.as_vec3()) as f64,
             ),
         }
     }

@@ -144,6 +144,36 @@ fn fma_f32(a: f32, b: f32, c: f32) -> f32 {
         .to_array()[0]
 }
 
+/// The compares and select of a scalar lane, whose mask is `bool`: the same for `f32` and `f64`.
+macro_rules! scalar_compares {
+    () => {
+        #[inline(always)]
+        fn lt(self, o: Self) -> bool {
+            self < o
+        }
+        #[inline(always)]
+        fn le(self, o: Self) -> bool {
+            self <= o
+        }
+        #[inline(always)]
+        fn gt(self, o: Self) -> bool {
+            self > o
+        }
+        #[inline(always)]
+        fn ge(self, o: Self) -> bool {
+            self >= o
+        }
+        #[inline(always)]
+        fn eq(self, o: Self) -> bool {
+            self == o
+        }
+        #[inline(always)]
+        fn select(m: bool, a: Self, b: Self) -> Self {
+            if m { a } else { b }
+        }
+    };
+}
+
 impl Lane for f32 {
     type Mask = bool;
 
@@ -167,30 +197,7 @@ impl Lane for f32 {
     fn copysign(self, sign: Self) -> Self {
         f32::from_bits((self.to_bits() & 0x7fff_ffff) | (sign.to_bits() & 0x8000_0000))
     }
-    #[inline(always)]
-    fn lt(self, o: Self) -> bool {
-        self < o
-    }
-    #[inline(always)]
-    fn le(self, o: Self) -> bool {
-        self <= o
-    }
-    #[inline(always)]
-    fn gt(self, o: Self) -> bool {
-        self > o
-    }
-    #[inline(always)]
-    fn ge(self, o: Self) -> bool {
-        self >= o
-    }
-    #[inline(always)]
-    fn eq(self, o: Self) -> bool {
-        self == o
-    }
-    #[inline(always)]
-    fn select(m: bool, a: Self, b: Self) -> Self {
-        if m { a } else { b }
-    }
+    scalar_compares!();
 }
 
 impl Lane32 for f32 {
@@ -299,28 +306,5 @@ impl Lane for f64 {
     fn copysign(self, sign: Self) -> Self {
         libm::copysign(self, sign)
     }
-    #[inline(always)]
-    fn lt(self, o: Self) -> bool {
-        self < o
-    }
-    #[inline(always)]
-    fn le(self, o: Self) -> bool {
-        self <= o
-    }
-    #[inline(always)]
-    fn gt(self, o: Self) -> bool {
-        self > o
-    }
-    #[inline(always)]
-    fn ge(self, o: Self) -> bool {
-        self >= o
-    }
-    #[inline(always)]
-    fn eq(self, o: Self) -> bool {
-        self == o
-    }
-    #[inline(always)]
-    fn select(m: bool, a: Self, b: Self) -> Self {
-        if m { a } else { b }
-    }
+    scalar_compares!();
 }

@@ -182,51 +182,35 @@ impl<L: Lane> Sub for V2<L> {
     }
 }
 
-impl From<glam::Vec2> for V2<f32> {
-    #[inline(always)]
-    fn from(v: glam::Vec2) -> Self {
-        Self::new(v.x, v.y)
-    }
+/// Conversions between glam's vectors of one precision and the vectors of that scalar lane.
+macro_rules! glam_conversions {
+    ($v2:ty, $v3:ty, $lane:ty) => {
+        impl From<$v2> for V2<$lane> {
+            #[inline(always)]
+            fn from(v: $v2) -> Self {
+                Self::new(v.x, v.y)
+            }
+        }
+        impl From<V2<$lane>> for $v2 {
+            #[inline(always)]
+            fn from(v: V2<$lane>) -> Self {
+                <$v2>::new(v.x, v.y)
+            }
+        }
+        impl From<$v3> for V3<$lane> {
+            #[inline(always)]
+            fn from(v: $v3) -> Self {
+                Self::new(v.x, v.y, v.z)
+            }
+        }
+        impl From<V3<$lane>> for $v3 {
+            #[inline(always)]
+            fn from(v: V3<$lane>) -> Self {
+                <$v3>::new(v.x, v.y, v.z)
+            }
+        }
+    };
 }
-impl From<V2<f32>> for glam::Vec2 {
-    #[inline(always)]
-    fn from(v: V2<f32>) -> Self {
-        glam::Vec2::new(v.x, v.y)
-    }
-}
-impl From<glam::Vec3> for V3<f32> {
-    #[inline(always)]
-    fn from(v: glam::Vec3) -> Self {
-        Self::new(v.x, v.y, v.z)
-    }
-}
-impl From<V3<f32>> for glam::Vec3 {
-    #[inline(always)]
-    fn from(v: V3<f32>) -> Self {
-        glam::Vec3::new(v.x, v.y, v.z)
-    }
-}
-impl From<glam::DVec2> for V2<f64> {
-    #[inline(always)]
-    fn from(v: glam::DVec2) -> Self {
-        Self::new(v.x, v.y)
-    }
-}
-impl From<V2<f64>> for glam::DVec2 {
-    #[inline(always)]
-    fn from(v: V2<f64>) -> Self {
-        glam::DVec2::new(v.x, v.y)
-    }
-}
-impl From<glam::DVec3> for V3<f64> {
-    #[inline(always)]
-    fn from(v: glam::DVec3) -> Self {
-        Self::new(v.x, v.y, v.z)
-    }
-}
-impl From<V3<f64>> for glam::DVec3 {
-    #[inline(always)]
-    fn from(v: V3<f64>) -> Self {
-        glam::DVec3::new(v.x, v.y, v.z)
-    }
-}
+
+glam_conversions!(glam::Vec2, glam::Vec3, f32);
+glam_conversions!(glam::DVec2, glam::DVec3, f64);

@@ -72,7 +72,10 @@ impl<I: U32Lane<F = L>, L: Math> CameraSample<I> {
     /// Times are uniform in [open, close) and never equal `close`. A shutter with close ≤ open
     /// gives `open` for every sample (an instantaneous exposure); a NaN or infinite end gives NaN
     /// times, as no uniform time exists. Every index, pixel and seed is valid.
-    #[inline]
+    ///
+    /// Always inlined: with a constant pixel, seed and shutter, the per-pixel seeds and shutter
+    /// terms fold away (as an out-of-line call, the report measured 16.8 ns a sample, not 9.0).
+    #[inline(always)]
     pub fn generate(
         pixel: [u32; 2],
         index: I,

@@ -376,3 +376,31 @@ fn spherical_polygons_pdf_and_inverse_agree_with_the_sampler() {
         failures.join("\n")
     );
 }
+
+/// Subnormal cones, found by the `warps` fuzz target: at h = 7.6e-41 the sample's x² + y²
+/// rounds in the subnormal range, and a relative margin alone put the cone's own samples outside
+/// its support. Wherever 1/(2πh) is finite (h ≥ 4.7e-40), every sample keeps its pdf; below, the
+/// cone is degenerate and the pdf is 0, never ∞.
+#[test]
+fn subnormal_cones_keep_the_pdf_of_their_own_samples() {
+    let mut us: Vec<Vec2> = (0..=64)
+        .flat_map(|i| (0..=64).map(move |j| Vec2::new(i as f32 / 64.0, j as f32 / 64.0)))
+        .collect();
+    us.push(Vec2::new(1.0, 0.123));
+    for h in [5e-40f32, 1e-39, 3e-39, 1e-38, 2e-38, 1e-37] {
+        for &u in &us {
+            let w = mcsample::warp::uniform_cone(u, h);
+            let pdf = mcsample::warp::uniform_cone_pdf(w, h);
+            let want = 0.5 / std::f64::consts::PI / h as f64;
+            let err = (pdf as f64 - want).abs() / want;
+            assert!(
+                err <= 1e-6,
+                "h = {h:e}, u = {u:?}, w = {w:?}: pdf {pdf:e}, want {want:e}"
+            );
+        }
+    }
+    for h in [7.5691e-41f32, 1e-44, 1e-45] {
+        let w = mcsample::warp::uniform_cone(Vec2::new(0.5, 0.5), h);
+        assert_eq!(mcsample::warp::uniform_cone_pdf(w, h), 0.0, "h = {h:e}");
+    }
+}

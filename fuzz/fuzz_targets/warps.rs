@@ -70,7 +70,9 @@ fuzz_target!(|data: &[u8]| {
         "uniform_cone_pdf lanes"
     );
     pdf_ok(pdf, "uniform_cone_pdf");
-    if u_finite && h > 0.0 && !h.is_nan() {
+    // Below about 4.6e-40, 1/(2πh) overflows and the cone counts as degenerate (pdf 0,
+    // documented); the check starts at 1e-38, clear of that edge.
+    if u_finite && h > 1e-38 && !h.is_nan() {
         assert!(pdf > 0.0, "uniform_cone_pdf({w}, {h}) = 0 at its own sample");
     }
     let w = warp::phong_lobe(u, n);

@@ -47,22 +47,22 @@ pub fn uniform_cone<P: Point2<Lane = L>, L: Math>(u: P, h: L) -> P::Vec3 {
 }
 
 /// pdf per steradian of [`uniform_cone`] at direction `w`: 1/(2πh) inside the cone, 0 outside,
-/// for h ≤ 0 (a degenerate cone) and for NaN in `w` or `h`. h is clamped to at most 2.
+/// for h ≤ 0 (a degenerate cone) and for NaN in `w` or `h`. h is clamped to at most 2; an h so
+/// small that 1/(2πh) overflows (below about 4.6e-40 in f32) is degenerate too, and gives 0.
 ///
-/// Inside means 1 − cos θ ≤ h·(1 + 2⁻²⁰), with 1 − cos θ taken as (x² + y²)/(1 + z) so that it
-/// keeps its precision near the axis. The margin is a few ulp: every direction [`uniform_cone`]
-/// returns, including at u₀ = 1 and for h down to 1e-9, gets the non-zero pdf, and the pdf
-/// drops to 0 within a relative 1e-6 of the true boundary.
+/// Inside means 1 − cos θ ≤ h·(1 + 2⁻²⁰) + 2⁻¹²⁶, with 1 − cos θ taken as (x² + y²)/(1 + z) so
+/// that it keeps its precision near the axis. The relative margin is a few ulp, and the absolute
+/// one covers x² + y² rounded in the subnormal range: every direction [`uniform_cone`] returns,
+/// including at u₀ = 1 and for the tiniest h, gets the non-zero pdf, and the pdf drops to 0
+/// within a relative 1e-6 of the true boundary (for h above 1e-32).
 #[inline(always)]
 pub fn uniform_cone_pdf<P: Point3<Lane = L>, L: Math>(w: P, h: L) -> L {
     // NaN must reach the select below as NaN, so it goes in the second operand of min.
     let h = L::c(H_MAX).min(h);
-    let inside = one_minus_z(w.to_lanes()).le(h * L::c(1.0 + 1.0 / 1_048_576.0));
-    L::select(
-        h.gt(L::c(0.0)) & inside,
-        L::c(0.5 * core::f64::consts::FRAC_1_PI) / h,
-        L::c(0.0),
-    )
+    let bound = h * L::c(1.0 + 1.0 / 1_048_576.0) + L::c(f32::MIN_POSITIVE as f64);
+    let inside = one_minus_z(w.to_lanes()).le(bound);
+    let p = L::c(0.5 * core::f64::consts::FRAC_1_PI) / h;
+    L::select(h.gt(L::c(0.0)) & inside & p.is_finite(), p, L::c(0.0))
 }
 
 /// Inverse of [`uniform_cone`]: u₀ = t/h with t = 1 − z = (x² + y²)/(1 + z) (no cancellation near

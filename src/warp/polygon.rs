@@ -28,14 +28,13 @@ pub(crate) fn vos_solid_angle<L: Math>(
 }
 
 /// pdf per steradian of direction `w` (unit) when points are drawn uniformly by area on a planar
-/// light through `p0` with normal `n` (unnormalised, |n| = area·`area_per_n`):
-/// d²/(|cos θ_l|·area) = (p0·n)²/|w·n|³ · (1/area_per_n)… written as k(p0·n)²/|w·n|³.
+/// light with normal `n` (unnormalised, |n| = area·`area_per_n`) and offset `h` = p·n for any
+/// point p of it: d²/(|cos θ_l|·area) = h²/|w·n|³ · (1/area_per_n)… written as k·h²/|w·n|³.
 ///
-/// A light seen edge-on (p0·n = 0) or a direction parallel to it (w·n = 0) gives 0: the sample is
+/// A light seen edge-on (h = 0) or a direction parallel to it (w·n = 0) gives 0: the sample is
 /// dropped rather than weighted by an infinite pdf.
 #[inline(always)]
-pub(crate) fn area_pdf_solid_angle<L: Math>(w: V3<L>, p0: V3<L>, n: V3<L>, k: L) -> L {
-    let h = p0.dot(n);
+pub(crate) fn area_pdf_solid_angle<L: Math>(w: V3<L>, h: L, n: V3<L>, k: L) -> L {
     let c = w.dot(n).abs();
     let p = k * (h * h) / (c * c * c);
     let ok = h.abs().gt(L::c(0.0)) & c.gt(L::c(0.0)) & p.is_finite();

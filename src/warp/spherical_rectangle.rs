@@ -158,7 +158,7 @@ fn pdf_of<L: Math>(s: &Setup<L>, w: V3<L>) -> L {
     let n = s.ex.cross(s.ey);
     L::select(
         s.by_area,
-        area_pdf_solid_angle(w, s.corner, n, L::c(1.0)),
+        area_pdf_solid_angle(w, s.corner.dot(n), n, L::c(1.0)),
         L::c(1.0) / s.omega,
     )
 }

@@ -25,7 +25,8 @@ pub const SPHERICAL_TRIANGLE_MAX_SR: f32 = 6.0;
 
 /// Everything the sampler, pdf and inverse need, computed once per triangle.
 struct Setup<L: Math> {
-    a: V3<L>,
+    /// The plane's offset v·n, the same for every vertex v.
+    h: L,
     /// Unit vertex directions.
     ua: V3<L>,
     ub: V3<L>,
@@ -33,9 +34,8 @@ struct Setup<L: Math> {
     /// Plane normal (b−a)×(c−a), unnormalised.
     n: V3<L>,
     omega: L,
-    /// α, the interior angle at A, and its sine.
-    alpha: L,
-    sin_alpha: L,
+    /// δ = α − Ω/2, α the interior angle at A: positive in every spherical triangle.
+    delta: L,
     /// 1 − cos and sin of the arc AB.
     one_minus_cos_c: L,
     sin_c: L,
@@ -55,59 +55,87 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     );
     let e1 = b - a;
     let e2 = c - a;
-    let n = e1.cross(e2);
-    // Scale-free triple product: a·(e1×e2)/(|a||b||c|), from edges so it keeps its precision.
-    let triple = ua.dot(n) / (lb * lc);
+    let e3 = c - b;
+    // The plane normal n = (b−a)×(c−a) = (c−b)×(a−b) = (a−c)×(b−c) and its offset h = v·n, from
+    // whichever vertex v conditions them best. Rounding in the cross product of the two edges at
+    // v costs about ε|v||e||e′| in h; up to a factor common to all three vertices that is |v|
+    // over the opposite edge. Basing at a alone loses 3e-3 of Ω for a light with one far vertex
+    // and two near ones, whose edges from a are long and nearly parallel.
+    let (ra, rb, rc) = (la / e3.length(), lb / e2.length(), lc / e1.length());
+    let at_b = rb.lt(ra) & rb.le(rc);
+    let at_c = rc.lt(ra) & rc.lt(rb);
+    let p = V3::select(at_c, e2, e1);
+    let q = V3::select(at_b | at_c, e3, e2);
+    let n = p.cross(q);
+    let h = V3::select(at_b, b, V3::select(at_c, c, a)).dot(n);
+    // Scale-free triple product a·(b×c)/(|a||b||c|).
+    let triple = h / (la * lb * lc);
     let omega = vos_solid_angle(triple, ua, ub, uc, L::c(1.0), L::c(1.0), L::c(1.0));
 
-    // α from the normals of the planes through (A, B) and (A, C), as atan2(|n₁×n₂|, n₁·n₂),
-    // which is accurate at every angle (acos is not, near 0 and π). The normals come from the raw
-    // vertex and edge vectors: a × (b − a) keeps its relative precision for a small triangle,
-    // where the cross product of two nearly equal unit vectors would not.
-    let nab = a.cross(e1);
-    let nac = a.cross(e2);
-    let lab = nab.length();
-    let nab = nab.scale(L::c(1.0) / lab);
-    let nac = nac.scale(L::c(1.0) / nac.length());
-    let cos_alpha = nab.dot(nac).clamp(L::c(-1.0), L::c(1.0));
-    let sin_alpha = nab.cross(nac).length();
-    let alpha = sin_alpha.atan2(cos_alpha);
-    // The arc c from A to B, as its cosine and (from the same cross product) its sine.
-    let dab = ua - ub;
-    let one_minus_cos_c = L::c(0.5) * dab.dot(dab);
-    let sin_c = lab / (la * lb);
+    // The arcs c = AB and b = AC and the angle α at A come from the normals a×b and a×c of the
+    // planes through A. a × b = a × (b − a): the shorter of b and b − a leaves the smaller
+    // rounding error, so a small triangle keeps its relative precision (b − a is short) and so
+    // does a far vertex beside near ones (b is).
+    let nab = a.cross(V3::select(e1.length_squared().lt(lb * lb), e1, b));
+    let nac = a.cross(V3::select(e2.length_squared().lt(lc * lc), e2, c));
+    let (lab, lac) = (nab.length(), nac.length());
+    let (sin_c, cos_c) = (lab / (la * lb), ua.dot(ub));
+    let (sin_b, cos_b) = (lac / (la * lc), ua.dot(uc));
+    // α as atan2(sin, cos), accurate at every angle (acos is not, near 0 and π). sin α from
+    // |(a×b)×(a×c)| = |a||a·(b×c)| = |a||h|, the well-conditioned offset, rather than from the
+    // cross product of two nearly parallel normals, which loses α's relative precision when α is
+    // small.
+    let inv = L::c(1.0) / (lab * lac);
+    let cos_alpha = (nab.dot(nac) * inv).clamp(L::c(-1.0), L::c(1.0));
+    let sin_alpha = (la * h.abs() * inv).min(L::c(1.0));
+    let one_minus_cos_c = versine(sin_c, cos_c);
+    // δ = α − Ω/2 from the half-angle excess formula at E = Ω (see `arvo`):
+    // tan δ = sin α / (cos α + tan(b/2) tan(c/2)), multiplied through by sin b sin c.
+    let sbc = sin_b * sin_c;
+    let delta =
+        (sin_alpha * sbc).atan2(cos_alpha.mul_add(sbc, versine(sin_b, cos_b) * one_minus_cos_c));
 
     // Collinear vertices can leave a rounding-sized normal, and a shading point in the plane a
     // rounding-sized triple product (with FMA, say), while VOS still reports up to 2π. Neither is
     // a light: the plane must be tilted by more than 1e-6 rad both ways.
     let nn = n.length();
     let valid = nn.gt(L::c(1e-6) * e1.length() * e2.length())
-        & ua.dot(n).abs().gt(L::c(1e-6) * nn)
+        & (h / la).abs().gt(L::c(1e-6) * nn)
         & omega.gt(L::c(0.0))
         & omega.is_finite()
-        & alpha.is_finite()
+        & delta.is_finite()
         & n.dot(n).is_finite()
         & la.gt(L::c(0.0))
         & lb.gt(L::c(0.0))
         & lc.gt(L::c(0.0));
     let by_area = omega.lt(L::c(SPHERICAL_TRIANGLE_MIN_SR as f64))
         | omega.gt(L::c(SPHERICAL_TRIANGLE_MAX_SR as f64))
-        | !alpha.is_finite()
+        | !delta.is_finite()
         | sin_alpha.eq(L::c(0.0));
     Setup {
-        a,
+        h,
         ua,
         ub,
         uc,
         n,
         omega,
-        alpha,
-        sin_alpha,
+        delta,
         one_minus_cos_c,
         sin_c,
         valid,
         by_area,
     }
+}
+
+/// 1 − cos θ of an angle given by its sine and cosine, without the cancellation near θ = 0:
+/// sin²θ / (1 + cos θ) where cos θ ≥ 0.
+#[inline(always)]
+fn versine<L: Math>(sin: L, cos: L) -> L {
+    L::select(
+        cos.ge(L::c(0.0)),
+        sin * sin / (L::c(1.0) + cos),
+        L::c(1.0) - cos,
+    )
 }
 
 /// The component of `v` orthogonal to unit `u`, normalised.
@@ -117,31 +145,29 @@ fn ortho<L: Math>(v: V3<L>, u: V3<L>) -> V3<L> {
     w.scale(L::c(1.0) / w.length())
 }
 
-/// Arvo's map: u₀ picks the sub-triangle A B Ĉ of area u₀Ω, u₁ the point along the arc B Ĉ.
+/// Arvo's map: u₀ picks the sub-triangle A B Ĉ of area E = u₀Ω, u₁ the point along the arc B Ĉ.
 ///
-/// Arvo writes cos b′, the arc from A to Ĉ, as a ratio and takes sin b′ = √(1 − cos²b′), which
-/// cancels when Ĉ is near A: a small u₀ then loses up to 3e-4 of direction in f32. Expanding the
-/// ratio with φ = Â − α, h₁ = sin(Â/2), h₂ = sin(Â/2 − α) and k = 1 − cos c = sin²c/(1 + cos c):
-///
-/// - P = 1 − cos φ cos α = h₁² + h₂² and Q = sin α sin φ (k itself is taken as |A − B|²/2,
-///   which does not cancel even when A and B are nearly opposite);
-/// - D = 2h₁² − kQ and cos b′ = (kP − 2h₁²)/D;
-/// - sin b′ = 2 sin c |h₁h₂|/|D|.
-///
-/// Every term is a product of sines, so nothing cancels for small triangles or small u₀.
+/// Arvo solves for cos b′, the arc from A to Ĉ, as a ratio and takes sin b′ = √(1 − cos²b′); both
+/// the ratio and the root cancel (a small u₀, or b′ near 90°, loses up to 3e-4 of direction in
+/// f32). The half-angle form of the spherical excess of the triangle with sides c, b′ and angle α
+/// between them, tan(E/2) = τt sin α / (1 + τt cos α) with τ = tan(c/2), t = tan(b′/2), solves
+/// to t = sin(E/2) / (τ sin(α − E/2)). With τ = (1 − cos c)/sin c, b′/2 is the angle of
+/// (x, y) = ((1 − cos c) sin(α − E/2), sin c sin(E/2)): two products of sines, each accurate, and
+/// cos b′, sin b′ follow from x and y without a root.
 #[inline(always)]
 fn arvo<L: Math>(s: &Setup<L>, u: V2<L>) -> V3<L> {
     let half = u.x * s.omega * L::c(0.5);
-    let (h1, c1) = half.sin_cos();
-    let (h2, c2) = (half - s.alpha).sin_cos();
-    let p = h1.mul_add(h1, h2 * h2);
-    let q = s.sin_alpha * h1.mul_add(c2, c1 * h2);
-    let k = s.one_minus_cos_c;
-    let two_h1_sq = L::c(2.0) * h1 * h1;
-    let d = (-k).mul_add(q, two_h1_sq);
-    let cos_b = k.mul_add(p, -two_h1_sq) / d;
-    let sin_b = L::c(2.0) * s.sin_c * (h1 * h2).abs() / d.abs();
-    let cos_b = cos_b.clamp(L::c(-1.0), L::c(1.0));
+    let (h1, _) = half.sin_cos();
+    // α − E/2 as δ + (1 − u₀)Ω/2: a sum of two non-negative terms, where α − E/2 would cancel
+    // as E nears Ω in a triangle with α close to Ω/2.
+    let (h2, _) = (L::c(1.0) - u.x)
+        .mul_add(s.omega * L::c(0.5), s.delta)
+        .sin_cos();
+    let x = s.one_minus_cos_c * h2.max(L::c(0.0));
+    let y = s.sin_c * h1;
+    let r = L::c(1.0) / x.mul_add(x, y * y);
+    let cos_b = ((x - y) * (x + y) * r).clamp(L::c(-1.0), L::c(1.0));
+    let sin_b = L::c(2.0) * x * y * r;
     let c_hat = s.ua.scale(cos_b) + ortho(s.uc, s.ua).scale(sin_b);
     // 1 − Ĉ·B as |Ĉ − B|²/2, so that z keeps its precision when Ĉ is close to B.
     let d = c_hat - s.ub;
@@ -212,7 +238,7 @@ pub fn spherical_triangle<P: Point2<Lane = L>, L: Math>(
 #[inline(always)]
 fn pdf_of<L: Math>(s: &Setup<L>, w: V3<L>) -> L {
     let sph = L::c(1.0) / s.omega;
-    let area = area_pdf_solid_angle(w, s.a, s.n, L::c(2.0));
+    let area = area_pdf_solid_angle(w, s.h, s.n, L::c(2.0));
     L::select(s.by_area, area, sph)
 }
 
@@ -223,7 +249,7 @@ fn pdf_of<L: Math>(s: &Setup<L>, w: V3<L>) -> L {
 pub fn spherical_triangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P, c: P) -> L {
     let (w, a, b, c) = (w.to_lanes(), a.to_lanes(), b.to_lanes(), c.to_lanes());
     let s = setup(a, b, c);
-    let inside = inside_polygon(w, [a, b, c], [b - a, c - b, a - c], a.dot(s.n));
+    let inside = inside_polygon(w, [a, b, c], [b - a, c - b, a - c], s.h);
     L::select(s.valid & inside, pdf_of(&s, w), L::c(0.0))
 }
 

@@ -34,8 +34,10 @@ struct Setup<L: Math> {
     /// Plane normal (b−a)×(c−a), unnormalised.
     n: V3<L>,
     omega: L,
-    /// δ = α − Ω/2, α the interior angle at A: positive in every spherical triangle.
-    delta: L,
+    /// π − α for an obtuse α, the interior angle at A, else δ = α − Ω/2 (positive in every
+    /// spherical triangle): the accurate term of sin(α − E/2).
+    angle0: L,
+    obtuse: L::Mask,
     /// 1 − cos and sin of the arc AB.
     one_minus_cos_c: L,
     sin_c: L,
@@ -90,10 +92,13 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     let sin_alpha = (la * h.abs() * inv).min(L::c(1.0));
     let one_minus_cos_c = versine(sin_c, cos_c);
     // δ = α − Ω/2 from the half-angle excess formula at E = Ω (see `arvo`):
-    // tan δ = sin α / (cos α + tan(b/2) tan(c/2)), multiplied through by sin b sin c.
+    // tan δ = sin α / (cos α + tan(b/2) tan(c/2)), multiplied through by sin b sin c. For an
+    // obtuse α the map wants π − α instead, which f32 cannot recover from α near π.
     let sbc = sin_b * sin_c;
+    let obtuse = cos_alpha.lt(L::c(0.0));
     let delta =
         (sin_alpha * sbc).atan2(cos_alpha.mul_add(sbc, versine(sin_b, cos_b) * one_minus_cos_c));
+    let angle0 = L::select(obtuse, sin_alpha.atan2(-cos_alpha), delta);
 
     // Collinear vertices can leave a rounding-sized normal, and a shading point in the plane a
     // rounding-sized triple product (with FMA, say), while VOS still reports up to 2π. Neither is
@@ -119,7 +124,8 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
         uc,
         n,
         omega,
-        delta,
+        angle0,
+        obtuse,
         one_minus_cos_c,
         sin_c,
         valid,
@@ -158,11 +164,11 @@ fn ortho<L: Math>(v: V3<L>, u: V3<L>) -> V3<L> {
 fn arvo<L: Math>(s: &Setup<L>, u: V2<L>) -> V3<L> {
     let half = u.x * s.omega * L::c(0.5);
     let (h1, _) = half.sin_cos();
-    // α − E/2 as δ + (1 − u₀)Ω/2: a sum of two non-negative terms, where α − E/2 would cancel
-    // as E nears Ω in a triangle with α close to Ω/2.
-    let (h2, _) = (L::c(1.0) - u.x)
-        .mul_add(s.omega * L::c(0.5), s.delta)
-        .sin_cos();
+    // sin(α − E/2) as a sum of two non-negative angles, never a difference, which would cancel
+    // as E nears Ω with α close to Ω/2, or for α near π: sin(δ + (1 − u₀)Ω/2) for an acute α,
+    // sin(π − α + E/2) for an obtuse one.
+    let rest = L::select(s.obtuse, half, (L::c(1.0) - u.x) * (s.omega * L::c(0.5)));
+    let (h2, _) = (s.angle0 + rest).sin_cos();
     let x = s.one_minus_cos_c * h2.max(L::c(0.0));
     let y = s.sin_c * h1;
     let r = L::c(1.0) / x.mul_add(x, y * y);

@@ -94,13 +94,10 @@ fn unit_conversion_is_exact_and_below_one() {
     assert_eq!(0u32.to_unit_f32().to_bits(), 0);
     assert_eq!(0x100u32.to_unit_f32(), 1.0 / 16_777_216.0);
     let mut rng = TestRng::new(2);
-    for x in (0..1_000_000).map(|_| rng.next_u32()).chain([
-        0xff,
-        0x1ff,
-        0x8000_0000,
-        0xffff_ff00,
-        0xffff_feff,
-    ]) {
+    for x in (0..1_000_000)
+        .map(|_| rng.next_u32())
+        .chain([0xff, 0x1ff, 0x8000_0000, 0xffff_ff00, 0xffff_feff])
+    {
         assert_eq!(x.to_unit_f32().to_bits(), ref_unit(x).to_bits(), "{x:#x}");
     }
     let p = U32x8::new([

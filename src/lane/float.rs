@@ -18,24 +18,16 @@ pub trait Mask: Copy + BitAnd<Output = Self> + BitOr<Output = Self> + Not<Output
 }
 
 impl Mask for bool {
-    #[inline(always)]
-    fn any(self) -> bool {
-        self
-    }
-    #[inline(always)]
-    fn all(self) -> bool {
-        self
+    inline_fns! {
+        fn any(self) -> bool { self }
+        fn all(self) -> bool { self }
     }
 }
 
 impl Mask for F32x8 {
-    #[inline(always)]
-    fn any(self) -> bool {
-        F32x8::any(self)
-    }
-    #[inline(always)]
-    fn all(self) -> bool {
-        F32x8::all(self)
+    inline_fns! {
+        fn any(self) -> bool { F32x8::any(self) }
+        fn all(self) -> bool { F32x8::all(self) }
     }
 }
 
@@ -147,29 +139,13 @@ fn fma_f32(a: f32, b: f32, c: f32) -> f32 {
 /// The compares and select of a scalar lane, whose mask is `bool`: the same for `f32` and `f64`.
 macro_rules! scalar_compares {
     () => {
-        #[inline(always)]
-        fn lt(self, o: Self) -> bool {
-            self < o
-        }
-        #[inline(always)]
-        fn le(self, o: Self) -> bool {
-            self <= o
-        }
-        #[inline(always)]
-        fn gt(self, o: Self) -> bool {
-            self > o
-        }
-        #[inline(always)]
-        fn ge(self, o: Self) -> bool {
-            self >= o
-        }
-        #[inline(always)]
-        fn eq(self, o: Self) -> bool {
-            self == o
-        }
-        #[inline(always)]
-        fn select(m: bool, a: Self, b: Self) -> Self {
-            if m { a } else { b }
+        inline_fns! {
+            fn lt(self, o: Self) -> bool { self < o }
+            fn le(self, o: Self) -> bool { self <= o }
+            fn gt(self, o: Self) -> bool { self > o }
+            fn ge(self, o: Self) -> bool { self >= o }
+            fn eq(self, o: Self) -> bool { self == o }
+            fn select(m: bool, a: Self, b: Self) -> Self { if m { a } else { b } }
         }
     };
 }
@@ -177,38 +153,23 @@ macro_rules! scalar_compares {
 impl Lane for f32 {
     type Mask = bool;
 
-    #[inline(always)]
-    fn c(x: f64) -> Self {
-        x as f32
-    }
-    #[inline(always)]
-    fn mul_add(self, b: Self, c: Self) -> Self {
-        fma_f32(self, b, c)
-    }
-    #[inline(always)]
-    fn sqrt(self) -> Self {
-        libm::sqrtf(self)
-    }
-    #[inline(always)]
-    fn abs(self) -> Self {
-        f32::from_bits(self.to_bits() & 0x7fff_ffff)
-    }
-    #[inline(always)]
-    fn copysign(self, sign: Self) -> Self {
-        f32::from_bits((self.to_bits() & 0x7fff_ffff) | (sign.to_bits() & 0x8000_0000))
+    inline_fns! {
+        fn c(x: f64) -> Self { x as f32 }
+        fn mul_add(self, b: Self, c: Self) -> Self { fma_f32(self, b, c) }
+        fn sqrt(self) -> Self { libm::sqrtf(self) }
+        fn abs(self) -> Self { f32::from_bits(self.to_bits() & 0x7fff_ffff) }
+        fn copysign(self, sign: Self) -> Self {
+            f32::from_bits((self.to_bits() & 0x7fff_ffff) | (sign.to_bits() & 0x8000_0000))
+        }
     }
     scalar_compares!();
 }
 
 impl Lane32 for f32 {
     type U = u32;
-    #[inline(always)]
-    fn to_bits(self) -> u32 {
-        f32::to_bits(self)
-    }
-    #[inline(always)]
-    fn from_bits(u: u32) -> Self {
-        f32::from_bits(u)
+    inline_fns! {
+        fn to_bits(self) -> u32 { f32::to_bits(self) }
+        fn from_bits(u: u32) -> Self { f32::from_bits(u) }
     }
 }
 
@@ -218,21 +179,11 @@ impl Lane32 for f32 {
 impl Lane for F32x8 {
     type Mask = F32x8;
 
-    #[inline(always)]
-    fn c(x: f64) -> Self {
-        F32x8::splat(x as f32)
-    }
-    #[inline(always)]
-    fn mul_add(self, b: Self, c: Self) -> Self {
-        F32x8::mul_add(self, b, c)
-    }
-    #[inline(always)]
-    fn sqrt(self) -> Self {
-        F32x8::sqrt(self)
-    }
-    #[inline(always)]
-    fn abs(self) -> Self {
-        F32x8::from_bits(F32x8::to_bits(self) & U32x8::splat(0x7fff_ffff))
+    inline_fns! {
+        fn c(x: f64) -> Self { F32x8::splat(x as f32) }
+        fn mul_add(self, b: Self, c: Self) -> Self { F32x8::mul_add(self, b, c) }
+        fn sqrt(self) -> Self { F32x8::sqrt(self) }
+        fn abs(self) -> Self { F32x8::from_bits(F32x8::to_bits(self) & U32x8::splat(0x7fff_ffff)) }
     }
     #[inline(always)]
     fn copysign(self, sign: Self) -> Self {
@@ -241,41 +192,21 @@ impl Lane for F32x8 {
                 | (F32x8::to_bits(sign) & U32x8::splat(0x8000_0000)),
         )
     }
-    #[inline(always)]
-    fn lt(self, o: Self) -> F32x8 {
-        self.simd_lt(o)
-    }
-    #[inline(always)]
-    fn le(self, o: Self) -> F32x8 {
-        self.simd_le(o)
-    }
-    #[inline(always)]
-    fn gt(self, o: Self) -> F32x8 {
-        self.simd_gt(o)
-    }
-    #[inline(always)]
-    fn ge(self, o: Self) -> F32x8 {
-        self.simd_ge(o)
-    }
-    #[inline(always)]
-    fn eq(self, o: Self) -> F32x8 {
-        self.simd_eq(o)
-    }
-    #[inline(always)]
-    fn select(m: F32x8, a: Self, b: Self) -> Self {
-        m.select(a, b)
+    inline_fns! {
+        fn lt(self, o: Self) -> F32x8 { self.simd_lt(o) }
+        fn le(self, o: Self) -> F32x8 { self.simd_le(o) }
+        fn gt(self, o: Self) -> F32x8 { self.simd_gt(o) }
+        fn ge(self, o: Self) -> F32x8 { self.simd_ge(o) }
+        fn eq(self, o: Self) -> F32x8 { self.simd_eq(o) }
+        fn select(m: F32x8, a: Self, b: Self) -> Self { m.select(a, b) }
     }
 }
 
 impl Lane32 for F32x8 {
     type U = U32x8;
-    #[inline(always)]
-    fn to_bits(self) -> U32x8 {
-        F32x8::to_bits(self)
-    }
-    #[inline(always)]
-    fn from_bits(u: U32x8) -> Self {
-        F32x8::from_bits(u)
+    inline_fns! {
+        fn to_bits(self) -> U32x8 { F32x8::to_bits(self) }
+        fn from_bits(u: U32x8) -> Self { F32x8::from_bits(u) }
     }
 }
 
@@ -294,17 +225,10 @@ impl Lane for f64 {
         // The reference wants the exact fused result whatever the build.
         libm::fma(self, b, c)
     }
-    #[inline(always)]
-    fn sqrt(self) -> Self {
-        libm::sqrt(self)
-    }
-    #[inline(always)]
-    fn abs(self) -> Self {
-        libm::fabs(self)
-    }
-    #[inline(always)]
-    fn copysign(self, sign: Self) -> Self {
-        libm::copysign(self, sign)
+    inline_fns! {
+        fn sqrt(self) -> Self { libm::sqrt(self) }
+        fn abs(self) -> Self { libm::fabs(self) }
+        fn copysign(self, sign: Self) -> Self { libm::copysign(self, sign) }
     }
     scalar_compares!();
 }

@@ -2,7 +2,7 @@
 //! sequence generators are written over.
 
 use core::fmt::Debug;
-use core::ops::{Add, BitAnd, BitOr, Sub};
+use core::ops::{Add, BitAnd, BitOr, BitXor, Shl, Shr, Sub};
 
 use wide::{bytemuck, i32x8};
 
@@ -19,7 +19,8 @@ const TWO_POW_M24: f32 = 1.0 / 16_777_216.0;
 /// A lane of 32-bit unsigned integers: the bits of a float lane, and the operations the sequence
 /// generators use, with wrapping arithmetic in both widths.
 ///
-/// The operators `+ − & |` are the plain ones (for `u32`, `+` and `−` are checked in debug
+/// Shifts are the operators `>>` and `<<` (also callable as `.shr(n)`, `.shl(n)`), logical, for
+/// n < 32. The operators `+ − & |` are the plain ones (for `u32`, `+` and `−` are checked in debug
 /// builds): bit manipulation of floats uses them where no overflow can occur; the generators use
 /// the `wrapping_*` methods.
 ///
@@ -27,7 +28,14 @@ const TWO_POW_M24: f32 = 1.0 / 16_777_216.0;
 /// exact too, so a generic generator gives the same bits in every lane of a packet as in the
 /// scalar form.
 pub trait U32Lane:
-    Copy + Add<Output = Self> + Sub<Output = Self> + BitAnd<Output = Self> + BitOr<Output = Self>
+    Copy
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + BitAnd<Output = Self>
+    + BitOr<Output = Self>
+    + BitXor<Output = Self>
+    + Shr<u32, Output = Self>
+    + Shl<u32, Output = Self>
 {
     /// The float lane of the same width.
     type F: Lane;
@@ -43,13 +51,15 @@ pub trait U32Lane:
     /// Lane-wise `a · b` mod 2³².
     fn wrapping_mul(self, b: Self) -> Self;
     /// Lane-wise `a ^ b`.
-    fn xor(self, b: Self) -> Self;
+    #[inline(always)]
+    fn xor(self, b: Self) -> Self {
+        self ^ b
+    }
     /// Lane-wise `a & b`.
-    fn and(self, b: Self) -> Self;
-    /// Lane-wise logical shift right by `n < 32`.
-    fn shr(self, n: u32) -> Self;
-    /// Lane-wise shift left by `n < 32`.
-    fn shl(self, n: u32) -> Self;
+    #[inline(always)]
+    fn and(self, b: Self) -> Self {
+        self & b
+    }
     /// (⌊self/d⌋, self mod d), lane-wise, for d ≥ 1: the hardware divide in scalar code, a
     /// multiply by a precomputed reciprocal in packets (exact in both, so the results agree).
     fn div_rem(self, d: u32) -> (Self, Self);
@@ -81,69 +91,19 @@ pub trait U32Lane:
 impl U32Lane for u32 {
     type F = f32;
     type Vec2 = glam::Vec2;
-    #[inline(always)]
-    fn splat(x: u32) -> Self {
-        x
-    }
-    #[inline(always)]
-    fn wrapping_add(self, b: Self) -> Self {
-        u32::wrapping_add(self, b)
-    }
-    #[inline(always)]
-    fn wrapping_sub(self, b: Self) -> Self {
-        u32::wrapping_sub(self, b)
-    }
-    #[inline(always)]
-    fn wrapping_mul(self, b: Self) -> Self {
-        u32::wrapping_mul(self, b)
-    }
-    #[inline(always)]
-    fn xor(self, b: Self) -> Self {
-        self ^ b
-    }
-    #[inline(always)]
-    fn and(self, b: Self) -> Self {
-        self & b
-    }
-    #[inline(always)]
-    fn shr(self, n: u32) -> Self {
-        self >> n
-    }
-    #[inline(always)]
-    fn shl(self, n: u32) -> Self {
-        self << n
-    }
-    #[inline(always)]
-    fn div_rem(self, d: u32) -> (Self, Self) {
-        (self / d, self % d)
-    }
-    #[inline(always)]
-    fn splat_from(repeated: &[u32; 8]) -> Self {
-        repeated[0]
-    }
-    #[inline(always)]
-    fn mul_hi(self, b: Self) -> Self {
-        ((self as u64 * b as u64) >> 32) as u32
-    }
-    #[inline(always)]
-    fn gt_mask(self, b: Self) -> Self {
-        0u32.wrapping_sub((self > b) as u32)
-    }
-    #[inline(always)]
-    fn top_bit_mask(self) -> Self {
-        ((self as i32) >> 31) as u32
-    }
-    #[inline(always)]
-    fn select(mask: Self, a: Self, b: Self) -> Self {
-        (a & mask) | (b & !mask)
-    }
-    #[inline(always)]
-    fn any_nonzero(self) -> bool {
-        self != 0
-    }
-    #[inline(always)]
-    fn reverse_bits(self) -> Self {
-        u32::reverse_bits(self)
+    inline_fns! {
+        fn splat(x: u32) -> Self { x }
+        fn wrapping_add(self, b: Self) -> Self { u32::wrapping_add(self, b) }
+        fn wrapping_sub(self, b: Self) -> Self { u32::wrapping_sub(self, b) }
+        fn wrapping_mul(self, b: Self) -> Self { u32::wrapping_mul(self, b) }
+        fn div_rem(self, d: u32) -> (Self, Self) { (self / d, self % d) }
+        fn splat_from(repeated: &[u32; 8]) -> Self { repeated[0] }
+        fn mul_hi(self, b: Self) -> Self { ((self as u64 * b as u64) >> 32) as u32 }
+        fn gt_mask(self, b: Self) -> Self { 0u32.wrapping_sub((self > b) as u32) }
+        fn top_bit_mask(self) -> Self { ((self as i32) >> 31) as u32 }
+        fn select(mask: Self, a: Self, b: Self) -> Self { (a & mask) | (b & !mask) }
+        fn any_nonzero(self) -> bool { self != 0 }
+        fn reverse_bits(self) -> Self { u32::reverse_bits(self) }
     }
     #[inline(always)]
     fn ratio(self, den: u32) -> f32 {
@@ -159,77 +119,25 @@ impl U32Lane for u32 {
 impl U32Lane for U32x8 {
     type F = F32x8;
     type Vec2 = V2<F32x8>;
-    #[inline(always)]
-    fn splat(x: u32) -> Self {
-        U32x8::splat(x)
-    }
-    #[inline(always)]
-    fn wrapping_add(self, b: Self) -> Self {
-        self + b
-    }
-    #[inline(always)]
-    fn wrapping_sub(self, b: Self) -> Self {
-        self - b
-    }
-    #[inline(always)]
-    fn wrapping_mul(self, b: Self) -> Self {
-        self * b
-    }
-    #[inline(always)]
-    fn xor(self, b: Self) -> Self {
-        self ^ b
-    }
-    #[inline(always)]
-    fn and(self, b: Self) -> Self {
-        self & b
-    }
-    #[inline(always)]
-    fn shr(self, n: u32) -> Self {
-        self >> n
-    }
-    #[inline(always)]
-    fn shl(self, n: u32) -> Self {
-        self << n
-    }
-    #[inline(always)]
-    fn div_rem(self, d: u32) -> (Self, Self) {
-        Divisor::new(d).div_rem(self)
-    }
-    #[inline(always)]
-    fn splat_from(repeated: &[u32; 8]) -> Self {
-        U32x8::new(*repeated)
-    }
-    #[inline(always)]
-    fn mul_hi(self, b: Self) -> Self {
-        self.mul_keep_high(b)
-    }
-    #[inline(always)]
-    fn gt_mask(self, b: Self) -> Self {
-        self.simd_gt(b)
-    }
-    #[inline(always)]
-    fn top_bit_mask(self) -> Self {
-        bytemuck::cast(bytemuck::cast::<U32x8, i32x8>(self) >> 31)
-    }
-    #[inline(always)]
-    fn select(mask: Self, a: Self, b: Self) -> Self {
-        mask.select(a, b)
-    }
-    #[inline(always)]
-    fn any_nonzero(self) -> bool {
-        self != U32x8::ZERO
-    }
-    #[inline(always)]
-    fn reverse_bits(self) -> Self {
-        reverse_bits_x8(self)
-    }
-    #[inline(always)]
-    fn ratio(self, den: u32) -> F32x8 {
-        bytemuck::cast::<U32x8, i32x8>(self).round_float() / F32x8::splat((den as i32) as f32)
-    }
-    #[inline(always)]
-    fn to_unit_f32(self) -> F32x8 {
-        F32x8::from_i32x8(bytemuck::cast::<U32x8, i32x8>(self >> 8)) * F32x8::splat(TWO_POW_M24)
+    inline_fns! {
+        fn splat(x: u32) -> Self { U32x8::splat(x) }
+        fn wrapping_add(self, b: Self) -> Self { self + b }
+        fn wrapping_sub(self, b: Self) -> Self { self - b }
+        fn wrapping_mul(self, b: Self) -> Self { self * b }
+        fn div_rem(self, d: u32) -> (Self, Self) { Divisor::new(d).div_rem(self) }
+        fn splat_from(repeated: &[u32; 8]) -> Self { U32x8::new(*repeated) }
+        fn mul_hi(self, b: Self) -> Self { self.mul_keep_high(b) }
+        fn gt_mask(self, b: Self) -> Self { self.simd_gt(b) }
+        fn top_bit_mask(self) -> Self { bytemuck::cast(bytemuck::cast::<U32x8, i32x8>(self) >> 31) }
+        fn select(mask: Self, a: Self, b: Self) -> Self { mask.select(a, b) }
+        fn any_nonzero(self) -> bool { self != U32x8::ZERO }
+        fn reverse_bits(self) -> Self { reverse_bits_x8(self) }
+        fn ratio(self, den: u32) -> F32x8 {
+            bytemuck::cast::<U32x8, i32x8>(self).round_float() / F32x8::splat((den as i32) as f32)
+        }
+        fn to_unit_f32(self) -> F32x8 {
+            F32x8::from_i32x8(bytemuck::cast::<U32x8, i32x8>(self >> 8)) * F32x8::splat(TWO_POW_M24)
+        }
     }
 }
 

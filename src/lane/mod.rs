@@ -29,6 +29,15 @@
 //! - `vector`: [`V2`] and [`V3`], vectors whose components are lanes, and their conversions to
 //!   glam's types.
 
+/// The lanes' trait impls are tables of one-line methods, every one `#[inline(always)]` (a lane
+/// operation must vanish into the algorithm that calls it). This writes the attribute once.
+macro_rules! inline_fns {
+    ($(fn $name:ident $args:tt -> $ret:ty $body:block)*) => {
+        $(#[inline(always)] fn $name $args -> $ret $body)*
+    };
+}
+pub(crate) use inline_fns;
+
 mod float;
 mod int;
 mod vector;

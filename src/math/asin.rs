@@ -3,17 +3,13 @@
 //! See [`crate::math`] for the measured error and the special values.
 
 use super::atan::{PIO4_HI, PIO4_LO};
-use super::horner;
+use super::{bits, horner};
 use crate::lane::Lane32;
 
 /// asin s = s + s³·P(s²) for s ∈ [0, ½]. Minimax for relative error: 2^-27.6.
-const ASIN_P: [f32; 5] = [
-    f32::from_bits(0x3e2a_aae4),
-    f32::from_bits(0x3d99_8102),
-    f32::from_bits(0x3d3a_3ddd),
-    f32::from_bits(0x3cc6_1f14),
-    f32::from_bits(0x3d2c_ae49),
-];
+const ASIN_P: [f32; 5] = bits([
+    0x3e2a_aae4, 0x3d99_8102, 0x3d3a_3ddd, 0x3cc6_1f14, 0x3d2c_ae49,
+]);
 
 /// For a = |x|: `(w, big)` with w = asin a when a ≤ ½, and w = asin √((1 − a)/2) when a > ½
 /// (`big`), so that asin a = π/2 − 2w there. NaN for a > 1 (the square root of a negative) and

@@ -2,17 +2,13 @@
 //!
 //! See [`crate::math`] for the measured error and the special values.
 
-use super::horner;
+use super::{bits, horner};
 use crate::lane::Lane32;
 
 /// atan t = t + t³·P(t²) for |t| ≤ ½. Minimax for relative error: 2^-27.5.
-const ATAN_P: [f32; 5] = [
-    f32::from_bits(0xbeaa_aa89),
-    f32::from_bits(0x3e4c_bd83),
-    f32::from_bits(0xbe11_24d9),
-    f32::from_bits(0x3dcf_fdca),
-    f32::from_bits(0xbd51_ed42),
-];
+const ATAN_P: [f32; 5] = bits([
+    0xbeaa_aa89, 0x3e4c_bd83, 0xbe11_24d9, 0x3dcf_fdca, 0xbd51_ed42,
+]);
 /// 2¹²⁶: above it, both operands are scaled by ¼ so that their sum cannot overflow.
 const TWO_126: f32 = f32::from_bits(0x7e80_0000);
 /// π/4 = PIO4_HI + PIO4_LO (+ 2^-48). PIO4_HI has 22 significant bits, so k·PIO4_HI is exact for

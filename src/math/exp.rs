@@ -3,17 +3,13 @@
 //! See [`crate::math`] for the measured error and the special values.
 
 use super::log::{LN2_HI, LN2_LO};
-use super::{MAGIC, MAGIC_BITS, horner};
+use super::{MAGIC, MAGIC_BITS, bits, fast_two_diff, horner};
 use crate::lane::{Lane, Lane32, U32Lane};
 
 /// expm1 r = r + r²·Q(r) for |r| ≤ ln2/2 (plus a little). Minimax for relative error: 2^-26.1.
-const EXPM1_Q: [f32; 5] = [
-    f32::from_bits(0x3eff_ffff),
-    f32::from_bits(0x3e2a_aa55),
-    f32::from_bits(0x3d2a_abcc),
-    f32::from_bits(0x3c09_15ff),
-    f32::from_bits(0x3ab5_64ec),
-];
+const EXPM1_Q: [f32; 5] = bits([
+    0x3eff_ffff, 0x3e2a_aa55, 0x3d2a_abcc, 0x3c09_15ff, 0x3ab5_64ec,
+]);
 const LOG2_E: f32 = f32::from_bits(0x3fb8_aa3b);
 const TWO_M64: f32 = f32::from_bits(0x1f80_0000);
 /// 2^-25: below it (in magnitude), eˣ − 1 rounds to x.
@@ -28,9 +24,7 @@ fn reduce<L: Lane32>(x: L) -> (L, L, L, L::U) {
     let n = t - L::c(MAGIC as f64);
     // x − n·LN2_HI is exact (n·LN2_HI is, and the two are close).
     let r_hi = n.mul_add(L::c(-LN2_HI as f64), x);
-    let w = n * L::c(LN2_LO as f64);
-    let r = r_hi - w;
-    let r_lo = (r_hi - r) - w;
+    let (r, r_lo) = fast_two_diff(r_hi, n * L::c(LN2_LO as f64));
     (n, r, r_lo, t.to_bits())
 }
 
@@ -42,7 +36,7 @@ fn expm1_poly<L: Lane>(r: L) -> L {
 /// 2^k from the bits of MAGIC + k (an integer-valued float) for k ∈ [−126, 127].
 #[inline(always)]
 fn pow2<L: Lane32>(tb: L::U) -> L {
-    L::from_bits((tb - L::U::splat(MAGIC_BITS - 127)).shl(23))
+    L::from_bits((tb - L::U::splat(MAGIC_BITS - 127)) << 23)
 }
 
 /// eˣ. Overflows to +∞ above 88.72283; results below 2^-126 are subnormal, correctly scaled

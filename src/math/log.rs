@@ -2,21 +2,14 @@
 //!
 //! See [`crate::math`] for the measured error and the special values.
 
-use super::horner;
+use super::{bits, horner};
 use crate::lane::{Lane, Lane32, U32Lane};
 
 /// ln(1 + f) = f + f²·Q(f) for f ∈ [√½ − 1, √2 − 1]. Minimax for relative error: 2^-26.
-const LN_Q: [f32; 9] = [
-    f32::from_bits(0xbeff_fffc),
-    f32::from_bits(0x3eaa_ab04),
-    f32::from_bits(0xbe80_027c),
-    f32::from_bits(0x3e4c_a43a),
-    f32::from_bits(0xbe29_d6cf),
-    f32::from_bits(0x3e14_7f14),
-    f32::from_bits(0xbe0c_ec36),
-    f32::from_bits(0x3de3_7ee2),
-    f32::from_bits(0xbd2b_56a6),
-];
+const LN_Q: [f32; 9] = bits([
+    0xbeff_fffc, 0x3eaa_ab04, 0xbe80_027c, 0x3e4c_a43a, 0xbe29_d6cf, 0x3e14_7f14, 0xbe0c_ec36,
+    0x3de3_7ee2, 0xbd2b_56a6,
+]);
 /// ln 2 = LN2_HI + LN2_LO (+ 2^-44). LN2_HI has 16 significant bits, so e·LN2_HI is exact for
 /// every exponent |e| ≤ 255.
 pub(crate) const LN2_HI: f32 = f32::from_bits(0x3f31_7200);
@@ -33,7 +26,7 @@ const EXP_BIAS_F: f32 = 8_388_735.0;
 #[inline(always)]
 fn split<L: Lane32>(x: L) -> (L, L, L::U) {
     let ix = (x.to_bits() & L::U::splat(0x7fff_ffff)) + L::U::splat(0x3f80_0000 - SQRT_HALF_BITS);
-    let eb = ix.shr(23);
+    let eb = ix >> 23;
     let m = L::from_bits((ix & L::U::splat(0x007f_ffff)) + L::U::splat(SQRT_HALF_BITS));
     let e = L::from_bits(eb | L::U::splat(0x4b00_0000)) - L::c(EXP_BIAS_F as f64);
     (e, m - L::c(1.0), eb)
@@ -83,7 +76,7 @@ pub fn ln_1p<L: Lane32>(x: L) -> L {
     // Otherwise ln(u + c) = ln u + c/u, and c/u = c'/(1 + f) ≈ c'·(1 − f + f²) with c' = c·2^-e
     // (|c'| ≤ 2^-24, so the error of the approximation, c'·f³, stays below 0.1 ulp).
     // 2^(1−e) from bits: (255 − eb) << 23; eb & 0xff keeps NaN bits from underflowing.
-    let two_pow = L::from_bits((L::U::splat(255) - (eb & L::U::splat(0xff))).shl(23));
+    let two_pow = L::from_bits((L::U::splat(255) - (eb & L::U::splat(0xff))) << 23);
     let half_recip = f.mul_add(f.mul_add(L::c(0.5), L::c(-0.5)), L::c(0.5));
     let corr = (c * two_pow) * half_recip;
     let v = L::select(e0, x, f);

@@ -103,7 +103,7 @@ pub mod exp;
 pub mod log;
 pub mod trig;
 
-use crate::lane::{F32x8, Lane};
+use crate::lane::{F32x8, Lane, inline_fns};
 
 /// The transcendental functions of a lane: the crate's own polynomials for `f32` and [`F32x8`],
 /// libm for the `f64` reference. Warps are generic over `L: Math`.
@@ -134,45 +134,17 @@ pub trait Math: Lane {
 macro_rules! own_math {
     ($t:ty) => {
         impl Math for $t {
-            #[inline(always)]
-            fn sin_cos(self) -> (Self, Self) {
-                trig::sin_cos(self)
-            }
-            #[inline(always)]
-            fn sincos_2pi(self) -> (Self, Self) {
-                trig::sincos_2pi(self)
-            }
-            #[inline(always)]
-            fn sincos_pi4(self) -> (Self, Self) {
-                trig::sincos_pi4(self)
-            }
-            #[inline(always)]
-            fn atan2(self, x: Self) -> Self {
-                atan::atan2(self, x)
-            }
-            #[inline(always)]
-            fn asin(self) -> Self {
-                asin::asin(self)
-            }
-            #[inline(always)]
-            fn acos(self) -> Self {
-                asin::acos(self)
-            }
-            #[inline(always)]
-            fn ln(self) -> Self {
-                log::ln(self)
-            }
-            #[inline(always)]
-            fn exp(self) -> Self {
-                exp::exp(self)
-            }
-            #[inline(always)]
-            fn ln_1p(self) -> Self {
-                log::ln_1p(self)
-            }
-            #[inline(always)]
-            fn exp_m1(self) -> Self {
-                exp::exp_m1(self)
+            inline_fns! {
+                fn sin_cos(self) -> (Self, Self) { trig::sin_cos(self) }
+                fn sincos_2pi(self) -> (Self, Self) { trig::sincos_2pi(self) }
+                fn sincos_pi4(self) -> (Self, Self) { trig::sincos_pi4(self) }
+                fn atan2(self, x: Self) -> Self { atan::atan2(self, x) }
+                fn asin(self) -> Self { asin::asin(self) }
+                fn acos(self) -> Self { asin::acos(self) }
+                fn ln(self) -> Self { log::ln(self) }
+                fn exp(self) -> Self { exp::exp(self) }
+                fn ln_1p(self) -> Self { log::ln_1p(self) }
+                fn exp_m1(self) -> Self { exp::exp_m1(self) }
             }
         }
     };
@@ -183,7 +155,7 @@ own_math!(F32x8);
 
 /// The reference instance: libm in f64.
 impl Math for f64 {
-    #[inline]
+    #[inline(always)]
     fn sin_cos(self) -> (Self, Self) {
         libm::sincos(self)
     }
@@ -194,37 +166,15 @@ impl Math for f64 {
         let r = self - libm::round(self);
         libm::sincos(core::f64::consts::TAU * r)
     }
-    #[inline]
-    fn sincos_pi4(self) -> (Self, Self) {
-        libm::sincos(core::f64::consts::FRAC_PI_4 * self)
-    }
-    #[inline]
-    fn atan2(self, x: Self) -> Self {
-        libm::atan2(self, x)
-    }
-    #[inline]
-    fn asin(self) -> Self {
-        libm::asin(self)
-    }
-    #[inline]
-    fn acos(self) -> Self {
-        libm::acos(self)
-    }
-    #[inline]
-    fn ln(self) -> Self {
-        libm::log(self)
-    }
-    #[inline]
-    fn exp(self) -> Self {
-        libm::exp(self)
-    }
-    #[inline]
-    fn ln_1p(self) -> Self {
-        libm::log1p(self)
-    }
-    #[inline]
-    fn exp_m1(self) -> Self {
-        libm::expm1(self)
+    inline_fns! {
+        fn sincos_pi4(self) -> (Self, Self) { libm::sincos(core::f64::consts::FRAC_PI_4 * self) }
+        fn atan2(self, x: Self) -> Self { libm::atan2(self, x) }
+        fn asin(self) -> Self { libm::asin(self) }
+        fn acos(self) -> Self { libm::acos(self) }
+        fn ln(self) -> Self { libm::log(self) }
+        fn exp(self) -> Self { libm::exp(self) }
+        fn ln_1p(self) -> Self { libm::log1p(self) }
+        fn exp_m1(self) -> Self { libm::expm1(self) }
     }
 }
 
@@ -233,6 +183,26 @@ impl Math for f64 {
 pub(crate) const MAGIC: f32 = 12_582_912.0;
 /// The bits of [`MAGIC`].
 pub(crate) const MAGIC_BITS: u32 = 0x4b40_0000;
+
+/// Fast2Sum for a difference (Dekker): `(d, e)` with d = fl(a − b) and d + e = a − b exactly,
+/// provided |a| ≥ |b| (or the subtraction is exact).
+#[inline(always)]
+pub(crate) fn fast_two_diff<L: Lane>(a: L, b: L) -> (L, L) {
+    let d = a - b;
+    (d, (a - d) - b)
+}
+
+/// f32 coefficients written as their bit patterns, so that the polynomial evaluated is exactly
+/// the one whose error was measured: a decimal literal would be rounded by the parser.
+pub(crate) const fn bits<const N: usize>(b: [u32; N]) -> [f32; N] {
+    let mut out = [0.0; N];
+    let mut i = 0;
+    while i < N {
+        out[i] = f32::from_bits(b[i]);
+        i += 1;
+    }
+    out
+}
 
 /// `p[0] + x·(p[1] + x·(p[2] + …))` by Horner's rule with [`Lane::mul_add`].
 ///

@@ -3,7 +3,7 @@
 //!
 //! See [`crate::math`] for domains and measured errors.
 
-use super::{MAGIC, horner, round_small};
+use super::{MAGIC, bits, fast_two_diff, horner, round_small};
 use crate::lane::{Lane, Lane32, U32Lane};
 
 // ---------------------------------------------------------------------------------------------
@@ -11,11 +11,7 @@ use crate::lane::{Lane, Lane32, U32Lane};
 // Minimax for relative error, coefficients fitted with the f32 rounding of the lower ones
 // fixed (max relative error of the polynomials themselves: 2^-26.6 for sin, 2^-33 for cos).
 
-const SIN_R: [f32; 3] = [
-    f32::from_bits(0xbe2a_aaaa),
-    f32::from_bits(0x3c08_8571),
-    f32::from_bits(0xb94d_0ae0),
-];
+const SIN_R: [f32; 3] = bits([0xbe2a_aaaa, 0x3c08_8571, 0xb94d_0ae0]);
 const COS_R: [f32; 4] = [
     -0.5,
     f32::from_bits(0x3d2a_aaa5),
@@ -48,12 +44,7 @@ const SIN_T: [f32; 4] = [
     f32::from_bits(0x3b23_2fd6),
     f32::from_bits(0xb816_dae7),
 ];
-const COS_T: [f32; 4] = [
-    f32::from_bits(0xbe9d_e9e6),
-    f32::from_bits(0x3c81_e0d8),
-    f32::from_bits(0xb9aa_d95b),
-    f32::from_bits(0x366a_7bf7),
-];
+const COS_T: [f32; 4] = bits([0xbe9d_e9e6, 0x3c81_e0d8, 0xb9aa_d95b, 0x366a_7bf7]);
 
 /// The same polynomials in v = t/2 (quarter turns): the coefficient of v^k is scaled by 2^k,
 /// exactly, so the results are those of the t-kernel at t = 2v, bit for bit.
@@ -117,12 +108,8 @@ pub fn sin_cos<L: Lane32>(x: L) -> (L, L) {
     // to the kernel. (Fast2Sum needs |r2| ≥ |j·C3|; below that, |r3| < 2^-17 and the lost bits
     // are far below its ulp.)
     let r1 = j.mul_add(L::c(-PIO2_C1 as f64), x);
-    let w2 = j * L::c(PIO2_C2 as f64);
-    let r2 = r1 - w2;
-    let e2 = (r1 - r2) - w2;
-    let w3 = j * L::c(PIO2_C3 as f64);
-    let r3 = r2 - w3;
-    let e3 = (r2 - r3) - w3;
+    let (r2, e2) = fast_two_diff(r1, j * L::c(PIO2_C2 as f64));
+    let (r3, e3) = fast_two_diff(r2, j * L::c(PIO2_C3 as f64));
     let lo = j.mul_add(L::c(-PIO2_C4 as f64), e2 + e3);
     let r = r3 + lo;
     let lo = lo - (r - r3);
@@ -130,9 +117,9 @@ pub fn sin_cos<L: Lane32>(x: L) -> (L, L) {
 
     let tb = t.to_bits();
     // Quadrant j mod 4: odd swaps sin and cos; sin is negated for j ≡ 2, 3, cos for j ≡ 1, 2.
-    let odd = L::from_bits((tb & L::U::splat(1)).shl(31) | L::U::splat(0x3f80_0000)).lt(L::c(0.0));
-    let sin_sign = (tb & L::U::splat(2)).shl(30);
-    let cos_sign = (((tb & L::U::splat(3)) + L::U::splat(1)) & L::U::splat(2)).shl(30);
+    let odd = L::from_bits(((tb & L::U::splat(1)) << 31) | L::U::splat(0x3f80_0000)).lt(L::c(0.0));
+    let sin_sign = (tb & L::U::splat(2)) << 30;
+    let cos_sign = (((tb & L::U::splat(3)) + L::U::splat(1)) & L::U::splat(2)) << 30;
     let sn = flip(L::select(odd, c, s), sin_sign);
     let cs = flip(L::select(odd, s, c), cos_sign);
     // sin(±0) = ±0 (the reduction turns −0 into +0).

@@ -60,7 +60,9 @@ pub fn uniform_cone_pdf<P: Point3<Lane = L>, L: Math>(w: P, h: L) -> L {
     // NaN must reach the select below as NaN, so it goes in the second operand of min.
     let h = L::c(H_MAX).min(h);
     let bound = h * L::c(1.0 + 1.0 / 1_048_576.0) + L::c(f32::MIN_POSITIVE as f64);
-    let inside = one_minus_z(w.to_lanes()).le(bound);
+    let w = w.to_lanes();
+    // 1 − cos θ reads x and y only above the equator: NaN there must still give 0.
+    let inside = one_minus_z(w).le(bound) & !w.any_nan();
     let p = L::c(0.5 * core::f64::consts::FRAC_1_PI) / h;
     L::select(h.gt(L::c(0.0)) & inside & p.is_finite(), p, L::c(0.0))
 }

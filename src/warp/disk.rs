@@ -79,11 +79,13 @@ pub fn polar_disk<P: Point2<Lane = L>, L: Math>(u: P) -> P {
     P::from_lanes(V2::new(r * c, r * s).nan_where(u.any_nan()))
 }
 
-/// Inverse of [`polar_disk`]: u₀ = |p|², u₁ = azimuth/2π in [0, 1). NaN gives NaN.
+/// Inverse of [`polar_disk`]: u₀ = |p|², at most 1 (a rim point that rounding put a few ulp
+/// outside comes back as 1), u₁ = azimuth/2π in [0, 1). NaN gives NaN.
 #[inline(always)]
-pub fn polar_disk_inverse<P: Point2>(p: P) -> P {
+pub fn polar_disk_inverse<P: Point2<Lane = L>, L: Math>(p: P) -> P {
     let p = p.to_lanes();
-    P::from_lanes(V2::new(p.length_squared(), azimuth_fraction(p.x, p.y)).nan_where(p.any_nan()))
+    let u0 = p.length_squared().min(L::c(1.0));
+    P::from_lanes(V2::new(u0, azimuth_fraction(p.x, p.y)).nan_where(p.any_nan()))
 }
 
 /// Area pdf of [`concentric_disk`] and [`polar_disk`] at `p`: 1/π inside the unit disk, 0

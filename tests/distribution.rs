@@ -15,9 +15,9 @@ use std::f64::consts::PI;
 
 use common::TestRng;
 use glam::{DVec2, DVec3, Vec2, Vec3};
+use mcsample::verify::registry::{self, Sampler};
 use mcsample::verify::{
-    Cap, ChiSquare, ChiSquareResult, PlanarLight, sidak_alpha, square_to_triangle,
-    triangle_to_square,
+    Cap, ChiSquare, ChiSquareResult, PlanarLight, sidak_alpha, triangle_to_square,
 };
 use mcsample::warp;
 
@@ -39,173 +39,37 @@ fn cap_test(
     })
 }
 
-/// The spherical polygons under test: (name, vertices, zoom cap). Sizes: a large light (≈1 sr),
-/// a small one just above the spherical-sampling threshold, and one below it (area sampling).
-fn triangles() -> Vec<(&'static str, [Vec3; 3])> {
-    let tri = |s: f32, d: f32| {
-        [
-            Vec3::new(-0.6 * s, -0.4 * s, d),
-            Vec3::new(0.7 * s, -0.3 * s, d + 0.2 * s),
-            Vec3::new(0.1 * s, 0.8 * s, d - 0.1 * s),
-        ]
-    };
-    vec![
-        ("spherical_triangle large", tri(1.0, 1.0)),
-        ("spherical_triangle small", tri(0.01, 1.0)),
-        ("spherical_triangle area-sampled", tri(1e-3, 1.0)),
-        ("spherical_triangle wide", tri(4.0, 0.3)),
-    ]
+/// The samplers under test: the registry, plus a wide triangle (4 sr-class, one vertex near the
+/// horizon) that stresses the spherical map where its arcs are long.
+fn samplers() -> Vec<Sampler> {
+    let mut all = registry::registry();
+    let wide = [
+        Vec3::new(-2.4, -1.6, 0.3),
+        Vec3::new(2.8, -1.2, 1.1),
+        Vec3::new(0.4, 3.2, -0.1),
+    ];
+    all.push(Sampler::SphericalTriangle { v: wide });
+    all
 }
 
-fn rectangles() -> Vec<(&'static str, [Vec3; 3])> {
-    let rect = |s: f32, d: f32| {
-        [
-            Vec3::new(-0.4 * s, -0.7 * s, d),
-            Vec3::new(1.1 * s, 0.0, 0.3 * s),
-            Vec3::new(0.0, 0.8 * s, 0.0),
-        ]
-    };
-    vec![
-        ("spherical_rectangle large", rect(1.0, 1.0)),
-        ("spherical_rectangle small", rect(0.2, 1.0)),
-        ("spherical_rectangle area-sampled", rect(0.05, 1.0)),
-    ]
+/// The spherical polygons among [`samplers`].
+fn polygons() -> Vec<Sampler> {
+    samplers().into_iter().filter(|s| s.is_polygon()).collect()
+}
+
+/// 10⁶ u pairs of the shared test generator, as the indexable sequence the χ² harness reads.
+fn u_table(seed: u64) -> impl Fn(usize) -> Vec2 {
+    let mut rng = TestRng::new(seed);
+    let us: Vec<Vec2> = (0..1_000_000).map(|_| rng.u2()).collect();
+    move |i| us[i]
 }
 
 fn positive_cases() -> Vec<(String, ChiSquareResult)> {
-    let inv_pi = 1.0 / PI;
-    let mut out: Vec<(String, ChiSquareResult)> = Vec::new();
-    let mut push = |name: &str, r: ChiSquareResult| out.push((name.to_string(), r));
-
-    let mut u = u_seq(1);
-    push(
-        "concentric_disk",
-        ChiSquare::disk().run(|i| warp::concentric_disk(u(i)), |_: DVec2| inv_pi),
-    );
-    let mut u = u_seq(2);
-    push(
-        "polar_disk",
-        ChiSquare::disk().run(|i| warp::polar_disk(u(i)), |_: DVec2| inv_pi),
-    );
-
-    let hemi = Cap::z(1.0);
-    let mut u = u_seq(3);
-    // The support includes the horizon z = 0 (u₀ = 0), which the zoom puts on the bottom row's
-    // edge: the test pdf must keep it.
-    push(
-        "uniform_hemisphere",
-        cap_test(
-            hemi,
-            |i| warp::uniform_hemisphere(u(i)),
-            warp::uniform_hemisphere_pdf,
-            6,
-        ),
-    );
-    let mut u = u_seq(4);
-    push(
-        "cosine_hemisphere",
-        cap_test(
-            hemi,
-            |i| warp::cosine_hemisphere(u(i)),
-            |w| warp::cosine_hemisphere_pdf(w.z),
-            6,
-        ),
-    );
-    let mut u = u_seq(5);
-    push(
-        "uniform_sphere",
-        cap_test(
-            Cap::z(2.0),
-            |i| warp::uniform_sphere(u(i)),
-            warp::uniform_sphere_pdf,
-            6,
-        ),
-    );
-
-    for (k, h) in [0.3f32, 1e-3].into_iter().enumerate() {
-        let mut u = u_seq(10 + k as u64);
-        push(
-            &format!("uniform_cone h={h}"),
-            cap_test(
-                Cap::z(h as f64),
-                |i| warp::uniform_cone(u(i), h),
-                |w| warp::uniform_cone_pdf(w, h),
-                6,
-            ),
-        );
-    }
-    for (k, (n, hs)) in [(1.0f32, 1.0), (20.0, 0.8), (500.0, 0.06)]
+    samplers()
         .into_iter()
         .enumerate()
-    {
-        let mut u = u_seq(20 + k as u64);
-        push(
-            &format!("phong_lobe n={n}"),
-            cap_test(
-                Cap::z(hs),
-                |i| warp::phong_lobe(u(i), n),
-                |w| warp::phong_lobe_pdf(w.z, n),
-                6,
-            ),
-        );
-    }
-
-    // Barycentrics mapped to the square by the equal-area (s, f) = ((b0+b1)², b1/(b0+b1)), so
-    // that the triangle's diagonal edge becomes the square's boundary. Density 2 on the triangle
-    // is 2·½ = 1 on the square.
-    let mut u = u_seq(30);
-    push(
-        "uniform_triangle",
-        ChiSquare::square().run(
-            |i| {
-                let b = warp::uniform_triangle(u(i)).as_dvec3();
-                triangle_to_square(b.x, b.y)
-            },
-            |st: DVec2| 0.5 * warp::uniform_triangle_pdf(square_to_triangle(st).as_vec2()) as f64,
-        ),
-    );
-    // Two independent tents, as a 2D density (1 − |x|)(1 − |y|) on [−1, 1]², scaled to the square.
-    let mut u = u_seq(31);
-    push(
-        "tent",
-        ChiSquare::square().run(
-            |i| {
-                let v = u(i);
-                DVec2::new(
-                    (warp::tent(v.x) as f64 + 1.0) / 2.0,
-                    (warp::tent(v.y) as f64 + 1.0) / 2.0,
-                )
-            },
-            |p: DVec2| {
-                4.0 * warp::tent_pdf((2.0 * p.x - 1.0) as f32) as f64
-                    * warp::tent_pdf((2.0 * p.y - 1.0) as f32) as f64
-            },
-        ),
-    );
-
-    for (k, (name, [a, b, c])) in triangles().into_iter().enumerate() {
-        let mut u = u_seq(40 + k as u64);
-        push(
-            name,
-            PlanarLight::triangle(a, b, c).test(
-                ChiSquare::square(),
-                |i| warp::spherical_triangle(u(i), a, b, c).0,
-                |w| warp::spherical_triangle_pdf(w.as_vec3(), a, b, c) as f64,
-            ),
-        );
-    }
-    for (k, (name, [s, ex, ey])) in rectangles().into_iter().enumerate() {
-        let mut u = u_seq(50 + k as u64);
-        push(
-            name,
-            PlanarLight::parallelogram(s, ex, ey).test(
-                ChiSquare::square(),
-                |i| warp::spherical_rectangle(u(i), s, ex, ey).0,
-                |w| warp::spherical_rectangle_pdf(w.as_vec3(), s, ex, ey) as f64,
-            ),
-        );
-    }
-    out
+        .map(|(k, s)| (s.name(), s.chi_square(1_000_000, u_table(k as u64 + 1))))
+        .collect()
 }
 
 /// Every warp passes at the Šidák-corrected level α = 0.01 over all of them.
@@ -236,33 +100,26 @@ fn every_warp_passes_chi_square() {
 fn returned_pdf_equals_pdf_function() {
     let mut u = u_seq(60);
     let mut worst = 0.0f64;
-    for (name, [a, b, c]) in triangles() {
+    for s in polygons() {
         for i in 0..20_000 {
-            let (w, p) = warp::spherical_triangle(u(i), a, b, c);
-            let q = warp::spherical_triangle_pdf(w, a, b, c);
+            let (x, p) = s.sample(u(i));
+            let q = s.pdf(x);
             // At the polygon's boundary the inside test can round either way.
             if q == 0.0 {
                 continue;
             }
             let rel = ((p - q) / q).abs() as f64;
             worst = worst.max(rel);
+            // The rectangle's pdf function recomputes Ω from the direction's frame: 1e-5.
+            let tol = if matches!(s, Sampler::SphericalRectangle { .. }) {
+                1e-5
+            } else {
+                1e-6
+            };
             assert!(
-                rel < 1e-6,
-                "{name}: sample pdf {p} vs pdf function {q} at {w}"
-            );
-        }
-    }
-    for (name, [s, ex, ey]) in rectangles() {
-        for i in 0..20_000 {
-            let (pt, p) = warp::spherical_rectangle(u(i), s, ex, ey);
-            let q = warp::spherical_rectangle_pdf(pt.normalize(), s, ex, ey);
-            if q == 0.0 {
-                continue;
-            }
-            let rel = ((p - q) / q).abs() as f64;
-            assert!(
-                rel < 1e-5,
-                "{name}: sample pdf {p} vs pdf function {q} at {pt}"
+                rel < tol,
+                "{}: sample pdf {p} vs pdf function {q} at {x}",
+                s.name()
             );
         }
     }
@@ -328,7 +185,9 @@ fn negative_controls_are_rejected() {
 
     // Spherical triangle samples against the pdf of the same triangle with one vertex moved by
     // 2 % of an edge: the pdf level and its support shift slightly.
-    let [a, b, c] = triangles()[0].1;
+    let Sampler::SphericalTriangle { v: [a, b, c] } = polygons()[0] else {
+        unreachable!()
+    };
     let moved = c + (b - a) * 0.02;
     let mut u = u_seq(74);
     let r = PlanarLight::triangle(a, b, c).test(
@@ -408,21 +267,15 @@ fn every_pdf_integrates_to_one() {
             1e-5,
         ));
     }
-    for (name, [a, b, c]) in triangles() {
-        let cap = Cap::around(&[a, b, c]);
-        cases.push((
-            name.into(),
-            integrate(cap, |w| warp::spherical_triangle_pdf(w, a, b, c), 3000),
-            3e-3,
-        ));
-    }
-    for (name, [s, ex, ey]) in rectangles() {
-        let cap = Cap::around(&[s, s + ex, s + ey, s + ex + ey]);
-        cases.push((
-            name.into(),
-            integrate(cap, |w| warp::spherical_rectangle_pdf(w, s, ex, ey), 3000),
-            3e-3,
-        ));
+    for s in polygons() {
+        let cap = match s {
+            Sampler::SphericalTriangle { v } => Cap::around(&v),
+            Sampler::SphericalRectangle { v: [c, ex, ey] } => {
+                Cap::around(&[c, c + ex, c + ey, c + ex + ey])
+            }
+            _ => unreachable!(),
+        };
+        cases.push((s.name(), integrate(cap, |w| s.pdf(w), 3000), 3e-3));
     }
     // Planar: the disk and triangle densities on their squares, the tent on [−1, 1].
     let m = 4000;
@@ -459,4 +312,31 @@ fn every_pdf_integrates_to_one() {
         .map(|(n, v, tol)| format!("{n}: ∫pdf = {v} (tolerance {tol})"))
         .collect();
     assert!(bad.is_empty(), "{}", bad.join("\n"));
+}
+
+#[test]
+fn registry_chi_square_rejects_a_sampler_with_the_wrong_pdf() {
+    // Negative controls through the same domains and binning as `every_warp_passes_chi_square`: each sampler's
+    // samples judged by a pdf that is slightly or grossly wrong.
+    let controls = [
+        (
+            Sampler::UniformCone { h: 0.3 },
+            Sampler::UniformCone { h: 0.25 },
+        ),
+        (Sampler::CosineHemisphere, Sampler::UniformHemisphere),
+        (
+            Sampler::PhongLobe { n: 20.0 },
+            Sampler::PhongLobe { n: 22.0 },
+        ),
+        (Sampler::PolarDisk, Sampler::Tent),
+    ];
+    for (k, (s, judge)) in controls.into_iter().enumerate() {
+        let r = s.chi_square_against(&judge, 200_000, u_table(99 + k as u64));
+        assert!(
+            r.p_value < 1e-6,
+            "{} judged by {} accepted: {r}",
+            s.name(),
+            judge.name()
+        );
+    }
 }

@@ -1,13 +1,18 @@
-//! Packet == scalar, bit for bit: every warp, pdf and inverse, and the frame, on 2¹⁶ random
-//! inputs mixed with the hard inputs (NaN, ±∞, 0, −0, 1, 1 − 2⁻²⁴, subnormals, huge values).
-//! Parameters and geometry differ from lane to lane, so one packet mixes code paths (spherical
-//! and area sampling, inside and outside a support).
+//! Packet == scalar, bit for bit, on 2¹⁶ random inputs mixed with the hard inputs (NaN, ±∞, 0,
+//! −0, 1, 1 − 2⁻²⁴, subnormals, huge values):
+//!
+//! - every sampler of the registry: sample, pdf and inverse, at the samples and at arbitrary
+//!   points;
+//! - the warps with parameters or geometry, with a different parameter or light in every lane, so
+//!   that one packet mixes code paths (spherical and area sampling, inside and outside a
+//!   support), and the frame.
 
 mod common;
 
 use common::TestRng;
 use glam::{Vec2, Vec3};
 use mcsample::frame::{self, Frame};
+use mcsample::verify::registry;
 use mcsample::verify::{Scalar, check_lanes};
 use mcsample::warp::{self, ONE_MINUS_EPS};
 use mcsample::x8::{F32x8, Vec2x8, Vec3x8};
@@ -118,116 +123,56 @@ fn run<S: Scalar, T: Scalar>(
 }
 
 #[test]
-fn every_warp_matches_its_scalar_twin_bit_for_bit() {
+fn every_registered_sampler_matches_its_scalar_twin_bit_for_bit() {
+    let mut g = TestRng::new(5);
+    let us: Vec<Vec2> = (0..N).map(|_| u2(&mut g)).collect();
+    let mut failures = Vec::new();
+    for s in registry::registry() {
+        let name = s.name();
+        run(
+            &mut failures,
+            &name,
+            &us,
+            |u: Vec2x8| s.sample(u),
+            |u: Vec2| s.sample(u),
+        );
+        // Points: half the samples, half arbitrary directions with hard components.
+        let xs: Vec<Vec3> = us
+            .iter()
+            .map(|&u| {
+                if g.below(2) == 0 {
+                    s.sample(u).0
+                } else {
+                    w(&mut g)
+                }
+            })
+            .collect();
+        run(
+            &mut failures,
+            &name,
+            &xs,
+            |x: Vec3x8| s.pdf(x),
+            |x: Vec3| s.pdf(x),
+        );
+        run(
+            &mut failures,
+            &name,
+            &xs,
+            |x: Vec3x8| s.inverse(x),
+            |x: Vec3| s.inverse(x),
+        );
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+#[test]
+fn warps_with_a_different_parameter_in_every_lane_match_their_scalar_twins() {
     let mut g = TestRng::new(7);
     let us: Vec<Vec2> = (0..N).map(|_| u2(&mut g)).collect();
     let xs: Vec<f32> = (0..N).map(|_| u1(&mut g)).collect();
     let ws: Vec<Vec3> = (0..N).map(|_| w(&mut g)).collect();
     let mut f = Vec::new();
     let f = &mut f;
-
-    run(
-        f,
-        "concentric_disk",
-        &us,
-        warp::x8::concentric_disk,
-        warp::concentric_disk,
-    );
-    run(
-        f,
-        "concentric_disk_inverse",
-        &us,
-        warp::x8::concentric_disk_inverse,
-        warp::concentric_disk_inverse,
-    );
-    run(f, "polar_disk", &us, warp::x8::polar_disk, warp::polar_disk);
-    run(
-        f,
-        "polar_disk_inverse",
-        &us,
-        warp::x8::polar_disk_inverse,
-        warp::polar_disk_inverse,
-    );
-    run(
-        f,
-        "uniform_hemisphere",
-        &us,
-        warp::x8::uniform_hemisphere,
-        warp::uniform_hemisphere,
-    );
-    run(
-        f,
-        "uniform_hemisphere_inverse",
-        &ws,
-        warp::x8::uniform_hemisphere_inverse,
-        warp::uniform_hemisphere_inverse,
-    );
-    run(
-        f,
-        "cosine_hemisphere",
-        &us,
-        warp::x8::cosine_hemisphere,
-        warp::cosine_hemisphere,
-    );
-    run(
-        f,
-        "cosine_hemisphere_pdf",
-        &xs,
-        warp::x8::cosine_hemisphere_pdf,
-        warp::cosine_hemisphere_pdf,
-    );
-    run(
-        f,
-        "cosine_hemisphere_inverse",
-        &ws,
-        warp::x8::cosine_hemisphere_inverse,
-        warp::cosine_hemisphere_inverse,
-    );
-    run(
-        f,
-        "uniform_sphere",
-        &us,
-        warp::x8::uniform_sphere,
-        warp::uniform_sphere,
-    );
-    run(
-        f,
-        "uniform_sphere_inverse",
-        &ws,
-        warp::x8::uniform_sphere_inverse,
-        warp::uniform_sphere_inverse,
-    );
-    run(
-        f,
-        "uniform_triangle",
-        &us,
-        warp::x8::uniform_triangle,
-        warp::uniform_triangle,
-    );
-    let bs: Vec<Vec3> = us.iter().map(|&u| warp::uniform_triangle(u)).collect();
-    run(
-        f,
-        "uniform_triangle_inverse",
-        &bs,
-        warp::x8::uniform_triangle_inverse,
-        warp::uniform_triangle_inverse,
-    );
-    run(
-        f,
-        "uniform_triangle_pdf",
-        &us,
-        warp::x8::uniform_triangle_pdf,
-        warp::uniform_triangle_pdf,
-    );
-    run(f, "tent", &xs, warp::x8::tent, warp::tent);
-    run(f, "tent_pdf", &xs, warp::x8::tent_pdf, warp::tent_pdf);
-    run(
-        f,
-        "tent_inverse",
-        &xs,
-        warp::x8::tent_inverse,
-        warp::tent_inverse,
-    );
 
     let hs: Vec<f32> = (0..N).map(|_| param(&mut g, 1e-8, 2.0)).collect();
     run(
@@ -266,27 +211,6 @@ fn every_warp_matches_its_scalar_twin_bit_for_bit() {
         &wh,
         |(w, h): (Vec3x8, F32x8)| warp::x8::uniform_cone_pdf(w, h),
         |(w, h): (Vec3, f32)| warp::uniform_cone_pdf(w, h),
-    );
-    run(
-        f,
-        "uniform_disk_pdf",
-        &us,
-        warp::x8::uniform_disk_pdf,
-        warp::uniform_disk_pdf,
-    );
-    run(
-        f,
-        "uniform_hemisphere_pdf",
-        &ws,
-        warp::x8::uniform_hemisphere_pdf,
-        warp::uniform_hemisphere_pdf,
-    );
-    run(
-        f,
-        "uniform_sphere_pdf",
-        &ws,
-        warp::x8::uniform_sphere_pdf,
-        warp::uniform_sphere_pdf,
     );
 
     let ns: Vec<f32> = (0..N).map(|_| param(&mut g, 1e-3, 1e7)).collect();

@@ -16,9 +16,9 @@ use std::time::Instant;
 
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use mcsample::lane::{V2, V3};
-use mcsample::verify::{Cap, ChiSquare, PlanarLight, square_to_triangle, triangle_to_square};
+use mcsample::verify::registry::{self, Sampler};
 use mcsample::warp;
-use mcsample::x8::{F32x8, Vec2x8, Vec3x8};
+use mcsample::x8::{Vec2x8, Vec3x8};
 use rand_core::Rng;
 use rand_pcg::Pcg32;
 
@@ -115,319 +115,37 @@ fn time_pair(
     (med(&mut ts), med(&mut tp))
 }
 
-/// A form of a warp, callable per point and, for timing, over a whole slice with the warp
-/// inlined into the loop (a call through `dyn Fn` per point would cost more than a cheap warp).
-struct Form<'a, I, O> {
-    one: Box<dyn Fn(I) -> O + 'a>,
-    batch: Batch<'a, I, O>,
-}
-
-/// A warp applied over a slice of inputs into a slice of outputs.
-type Batch<'a, I, O> = Box<dyn Fn(&[I], &mut [O]) + 'a>;
-
-impl<'a, I: Copy + 'a, O: 'a> Form<'a, I, O> {
-    fn new(f: impl Fn(I) -> O + Clone + 'a) -> Self {
-        let g = f.clone();
-        Form {
-            one: Box::new(f),
-            batch: Box::new(move |input: &[I], out: &mut [O]| {
-                for (o, &u) in out.iter_mut().zip(input) {
-                    *o = g(u);
-                }
-            }),
-        }
-    }
-}
-
-/// One warp of the table: its forms and how to judge it.
-struct Warp<'a> {
-    name: String,
-    /// Scalar, x8 and f64 forms, with outputs widened to 3D (disks get z = 0).
-    s: Form<'a, Vec2, Vec3>,
-    p: Form<'a, Vec2x8, Vec3x8>,
-    r: Box<dyn Fn(DVec2) -> DVec3 + 'a>,
-    /// pdf of an output point, in f32 and in f64 (evaluated at the same f32 point).
-    pdf_s: Box<dyn Fn(Vec3) -> f32 + 'a>,
-    pdf_r: Box<dyn Fn(DVec3) -> f64 + 'a>,
-    /// The χ² p-value of `n` samples.
-    chi2: Box<dyn Fn(usize) -> f64 + 'a>,
-}
-
 fn d2(u: DVec2) -> V2<f64> {
     u.into()
 }
 fn d3(v: Vec3) -> V3<f64> {
     v.as_dvec3().into()
 }
-fn o3(v: V3<f64>) -> DVec3 {
-    v.into()
-}
 
-fn catalogue<'a>() -> Vec<Warp<'a>> {
-    let mut w: Vec<Warp<'a>> = Vec::new();
-    let inv_pi = std::f64::consts::FRAC_1_PI;
-    let seq = |seed| {
-        let pts = uniform_points(1_000_000, seed);
-        move |i: usize| pts[i]
-    };
-
-    macro_rules! disk {
-        ($name:literal, $f:ident) => {
-            w.push(Warp {
-                name: $name.into(),
-                s: Form::new(|u: Vec2| warp::$f(u).extend(0.0)),
-                p: Form::new(|u: Vec2x8| {
-                    let q = warp::x8::$f(u);
-                    Vec3x8::new(q.x, q.y, F32x8::ZERO)
-                }),
-                r: Box::new(|u: DVec2| warp::$f(u).extend(0.0)),
-                pdf_s: Box::new(|p: Vec3| warp::uniform_disk_pdf(p.truncate())),
-                pdf_r: Box::new(|p: DVec3| warp::uniform_disk_pdf(p.truncate())),
-                chi2: Box::new(move |n| {
-                    let u = seq(1);
-                    ChiSquare::disk()
-                        .samples(n)
-                        .run(|i| warp::$f(u(i)), |_: DVec2| inv_pi)
-                        .p_value
-                }),
-            });
-        };
-    }
-    disk!("concentric_disk", concentric_disk);
-    disk!("polar_disk", polar_disk);
-
-    macro_rules! dir {
-        ($name:expr, $hs:expr, $ires:expr, |$u:ident| $s:expr, $p:expr, $r:expr, |$w:ident| $pdf_s:expr, $pdf_r:expr) => {
-            w.push(Warp {
-                name: $name,
-                s: Form::new(move |$u: Vec2| $s),
-                p: Form::new(move |$u: Vec2x8| $p),
-                r: Box::new(move |u: DVec2| {
-                    let $u = d2(u);
-                    o3($r)
-                }),
-                pdf_s: Box::new(move |$w: Vec3| $pdf_s),
-                pdf_r: Box::new(move |w: DVec3| {
-                    let $w: V3<f64> = w.into();
-                    $pdf_r
-                }),
-                chi2: Box::new(move |n| {
-                    let u = seq(2);
-                    let sample = |i: usize| {
-                        let $u = u(i);
-                        $s
-                    };
-                    Cap::z($hs)
-                        .test(
-                            ChiSquare::sphere().samples(n).ires($ires),
-                            sample,
-                            |w: DVec3| {
-                                let $w = w.as_vec3();
-                                ($pdf_s) as f64
-                            },
-                        )
-                        .p_value
-                }),
-            });
-        };
-    }
-    dir!(
-        "uniform_hemisphere".into(),
-        1.0,
-        6,
-        |u| warp::uniform_hemisphere(u),
-        warp::x8::uniform_hemisphere(u),
-        warp::uniform_hemisphere(u),
-        |w| warp::uniform_hemisphere_pdf(w),
-        warp::uniform_hemisphere_pdf(w)
+/// One row of the warp table: a sampler of the registry (the same samplers, at the same
+/// parameters, as the tests), timed over the batch with the warp inlined into the loop, its
+/// error against its f64 instance, and its χ² p-value.
+fn measure(cfg: &Config, s: Sampler, pts: &[Vec2], packets: &[Vec2x8], err_pts: &[Vec2]) -> Row {
+    let (scalar_ns, x8_ns) = time_pair(
+        cfg,
+        pts,
+        packets,
+        &|us: &[Vec2], out: &mut [Vec3]| s.sample_all(us, out),
+        &|us: &[Vec2x8], out: &mut [Vec3x8]| s.sample_all(us, out),
     );
-    dir!(
-        "cosine_hemisphere".into(),
-        1.0,
-        6,
-        |u| warp::cosine_hemisphere(u),
-        warp::x8::cosine_hemisphere(u),
-        warp::cosine_hemisphere(u),
-        |w| warp::cosine_hemisphere_pdf(w.z),
-        warp::cosine_hemisphere_pdf(w.z)
-    );
-    dir!(
-        "uniform_sphere".into(),
-        2.0,
-        6,
-        |u| warp::uniform_sphere(u),
-        warp::x8::uniform_sphere(u),
-        warp::uniform_sphere(u),
-        |w| warp::uniform_sphere_pdf(w),
-        warp::uniform_sphere_pdf(w)
-    );
-    for h in [0.3f32, 1e-3] {
-        let h8 = F32x8::splat(h);
-        dir!(
-            format!("uniform_cone h={h}"),
-            h as f64,
-            6,
-            |u| warp::uniform_cone(u, h),
-            warp::x8::uniform_cone(u, h8),
-            warp::uniform_cone(u, h as f64),
-            |w| warp::uniform_cone_pdf(w, h),
-            warp::uniform_cone_pdf(w, h as f64)
-        );
-    }
-    for (n, hs) in [(1.0f32, 1.0), (20.0, 0.8), (500.0, 0.06)] {
-        let n8 = F32x8::splat(n);
-        dir!(
-            format!("phong_lobe n={n}"),
-            hs,
-            6,
-            |u| warp::phong_lobe(u, n),
-            warp::x8::phong_lobe(u, n8),
-            warp::phong_lobe(u, n as f64),
-            |w| warp::phong_lobe_pdf(w.z, n),
-            warp::phong_lobe_pdf(w.z, n as f64)
-        );
-    }
-
-    w.push(Warp {
-        name: "uniform_triangle".into(),
-        s: Form::new(warp::uniform_triangle),
-        p: Form::new(warp::x8::uniform_triangle),
-        r: Box::new(|u| o3(warp::uniform_triangle(d2(u)))),
-        pdf_s: Box::new(|b| warp::uniform_triangle_pdf(b.truncate())),
-        pdf_r: Box::new(|b| warp::uniform_triangle_pdf(d2(b.truncate()))),
-        chi2: Box::new(move |n| {
-            let u = seq(3);
-            // The equal-area map (s, f) = ((b0+b1)², b1/(b0+b1)) turns the triangle's diagonal
-            // edge into the square's boundary; density 2 on the triangle is 1 on the square.
-            ChiSquare::square()
-                .samples(n)
-                .run(
-                    |i| {
-                        let b = warp::uniform_triangle(u(i)).as_dvec3();
-                        triangle_to_square(b.x, b.y)
-                    },
-                    |st: DVec2| {
-                        0.5 * warp::uniform_triangle_pdf(square_to_triangle(st).as_vec2()) as f64
-                    },
-                )
-                .p_value
-        }),
-    });
-    w.push(Warp {
-        name: "tent".into(),
-        s: Form::new(|u: Vec2| Vec3::new(warp::tent(u.x), warp::tent(u.y), 0.0)),
-        p: Form::new(|u: Vec2x8| {
-            Vec3x8::new(warp::x8::tent(u.x), warp::x8::tent(u.y), F32x8::ZERO)
-        }),
-        r: Box::new(|u| DVec3::new(warp::tent(u.x), warp::tent(u.y), 0.0)),
-        pdf_s: Box::new(|x| warp::tent_pdf(x.x) * warp::tent_pdf(x.y)),
-        pdf_r: Box::new(|x| warp::tent_pdf(x.x) * warp::tent_pdf(x.y)),
-        chi2: Box::new(move |n| {
-            let u = seq(4);
-            ChiSquare::square()
-                .samples(n)
-                .run(
-                    |i| {
-                        let v = u(i);
-                        DVec2::new(
-                            (warp::tent(v.x) as f64 + 1.0) / 2.0,
-                            (warp::tent(v.y) as f64 + 1.0) / 2.0,
-                        )
-                    },
-                    |p: DVec2| {
-                        4.0 * (warp::tent_pdf((2.0 * p.x - 1.0) as f32)
-                            * warp::tent_pdf((2.0 * p.y - 1.0) as f32))
-                            as f64
-                    },
-                )
-                .p_value
-        }),
-    });
-
-    let tri = |s: f32| {
-        [
-            Vec3::new(-0.6 * s, -0.4 * s, 1.0),
-            Vec3::new(0.7 * s, -0.3 * s, 1.0 + 0.2 * s),
-            Vec3::new(0.1 * s, 0.8 * s, 1.0 - 0.1 * s),
-        ]
-    };
-    for (label, [a, b, c]) in [
-        ("large", tri(1.0)),
-        ("small", tri(0.01)),
-        ("area", tri(1e-3)),
-    ] {
-        let (a8, b8, c8) = (Vec3x8::splat(a), Vec3x8::splat(b), Vec3x8::splat(c));
-        w.push(Warp {
-            name: format!("spherical_triangle {label}"),
-            s: Form::new(move |u| warp::spherical_triangle(u, a, b, c).0),
-            p: Form::new(move |u| warp::x8::spherical_triangle(u, a8, b8, c8).0),
-            r: Box::new(move |u| o3(warp::spherical_triangle(d2(u), d3(a), d3(b), d3(c)).0)),
-            pdf_s: Box::new(move |x| warp::spherical_triangle_pdf(x, a, b, c)),
-            pdf_r: Box::new(move |x| warp::spherical_triangle_pdf(x.into(), d3(a), d3(b), d3(c))),
-            chi2: Box::new(move |n| {
-                let u = seq(5);
-                PlanarLight::triangle(a, b, c)
-                    .test(
-                        ChiSquare::square().samples(n),
-                        |i| warp::spherical_triangle(u(i), a, b, c).0,
-                        |x: DVec3| warp::spherical_triangle_pdf(x.as_vec3(), a, b, c) as f64,
-                    )
-                    .p_value
-            }),
-        });
-    }
-    let rect = |s: f32| {
-        [
-            Vec3::new(-0.4 * s, -0.7 * s, 1.0),
-            Vec3::new(1.1 * s, 0.0, 0.3 * s),
-            Vec3::new(0.0, 0.8 * s, 0.0),
-        ]
-    };
-    for (label, [s0, ex, ey]) in [
-        ("large", rect(1.0)),
-        ("small", rect(0.2)),
-        ("area", rect(0.05)),
-    ] {
-        let (s8, ex8, ey8) = (Vec3x8::splat(s0), Vec3x8::splat(ex), Vec3x8::splat(ey));
-        w.push(Warp {
-            name: format!("spherical_rectangle {label}"),
-            s: Form::new(move |u| warp::spherical_rectangle(u, s0, ex, ey).0),
-            p: Form::new(move |u| warp::x8::spherical_rectangle(u, s8, ex8, ey8).0),
-            r: Box::new(move |u| o3(warp::spherical_rectangle(d2(u), d3(s0), d3(ex), d3(ey)).0)),
-            pdf_s: Box::new(move |x| warp::spherical_rectangle_pdf(x.normalize(), s0, ex, ey)),
-            pdf_r: Box::new(move |x| {
-                warp::spherical_rectangle_pdf(x.normalize().into(), d3(s0), d3(ex), d3(ey))
-            }),
-            chi2: Box::new(move |n| {
-                let u = seq(6);
-                PlanarLight::parallelogram(s0, ex, ey)
-                    .test(
-                        ChiSquare::square().samples(n),
-                        |i| warp::spherical_rectangle(u(i), s0, ex, ey).0,
-                        |x: DVec3| warp::spherical_rectangle_pdf(x.as_vec3(), s0, ex, ey) as f64,
-                    )
-                    .p_value
-            }),
-        });
-    }
-    w
-}
-
-fn measure(cfg: &Config, wp: &Warp, pts: &[Vec2], packets: &[Vec2x8], err_pts: &[Vec2]) -> Row {
-    let (scalar_ns, x8_ns) = time_pair(cfg, pts, packets, &*wp.s.batch, &*wp.p.batch);
     let mut max_abs_err = 0.0f64;
     let mut worst_u = Vec2::ZERO;
     let mut max_pdf_rel_err = 0.0f64;
     for &u in err_pts {
-        let a = (wp.s.one)(u);
-        let b = (wp.r)(u.as_dvec2());
+        let a = s.sample(u).0;
+        let b = s.sample(u.as_dvec2()).0;
         let e = (a.as_dvec3() - b).abs().max_element();
         if worse(e, max_abs_err) {
             max_abs_err = e;
             worst_u = u;
         }
-        let ps = (wp.pdf_s)(a) as f64;
-        let pr = (wp.pdf_r)(a.as_dvec3());
+        let ps = s.pdf(a) as f64;
+        let pr = s.pdf(a.as_dvec3());
         // A point on the support's boundary may be inside in one precision and outside in the
         // other: that is a rounding of the support, not a pdf error, so only points inside in
         // both count.
@@ -438,9 +156,11 @@ fn measure(cfg: &Config, wp: &Warp, pts: &[Vec2], packets: &[Vec2x8], err_pts: &
             }
         }
     }
-    let chi2_p = (wp.chi2)(if cfg.quick { 200_000 } else { 1_000_000 });
+    let n = if cfg.quick { 200_000 } else { 1_000_000 };
+    let us = uniform_points(n, 7);
+    let chi2_p = s.chi_square(n, |i| us[i]).p_value;
     Row {
-        name: wp.name.clone(),
+        name: s.name(),
         scalar_ns,
         x8_ns,
         max_abs_err,
@@ -609,8 +329,8 @@ fn main() {
         "warp", "scalar ns", "x8 ns", "speedup", "max abs err", "worst u", "pdf rel err", "χ² p"
     );
     let mut rows = Vec::new();
-    for wp in catalogue() {
-        let r = measure(&cfg, &wp, &pts, &packets, &err_pts);
+    for s in registry::registry() {
+        let r = measure(&cfg, s, &pts, &packets, &err_pts);
         println!(
             "{:<28} {:>10.2} {:>10.2} {:>7.1}× {:>12.2e} {:>24} {:>12.2e} {:>9.4}",
             r.name,

@@ -136,6 +136,26 @@ fn fma_f32(a: f32, b: f32, c: f32) -> f32 {
         .to_array()[0]
 }
 
+/// Correctly rounded f32 square root, encoded for the build.
+///
+/// On x86, libm's `sqrtf` is an inline-asm `sqrtss`, which LLVM emits as written, never in its
+/// VEX form: in an AVX build with the upper halves of the ymm registers dirty (the normal state
+/// of AVX code) every such instruction pays the SSE/AVX transition, which made the scalar
+/// spherical triangle 17× slower in the report. The intrinsic through lane 0 of an f32x4 is
+/// encoded for the target (`vsqrtss` with AVX). Elsewhere libm's, which uses the hardware
+/// instruction where it has one.
+#[inline(always)]
+fn sqrt_f32(x: f32) -> f32 {
+    #[cfg(target_feature = "sse")]
+    {
+        wide::f32x4::splat(x).sqrt().to_array()[0]
+    }
+    #[cfg(not(target_feature = "sse"))]
+    {
+        libm::sqrtf(x)
+    }
+}
+
 /// The compares and select of a scalar lane, whose mask is `bool`: the same for `f32` and `f64`.
 macro_rules! scalar_compares {
     () => {
@@ -156,7 +176,7 @@ impl Lane for f32 {
     inline_fns! {
         fn c(x: f64) -> Self { x as f32 }
         fn mul_add(self, b: Self, c: Self) -> Self { fma_f32(self, b, c) }
-        fn sqrt(self) -> Self { libm::sqrtf(self) }
+        fn sqrt(self) -> Self { sqrt_f32(self) }
         fn abs(self) -> Self { f32::from_bits(self.to_bits() & 0x7fff_ffff) }
         fn copysign(self, sign: Self) -> Self {
             f32::from_bits((self.to_bits() & 0x7fff_ffff) | (sign.to_bits() & 0x8000_0000))

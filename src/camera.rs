@@ -89,7 +89,7 @@ impl<I: U32Lane<F = L>, L: Math> CameraSample<I> {
         let film = match filter {
             PixelFilter::Box => V2::new(px + u.x, py + u.y),
             PixelFilter::Tent => {
-                let half = L::c(0.5);
+                let half = L::HALF;
                 V2::new(px + half + tent(u.x), py + half + tent(u.y))
             }
         };
@@ -102,7 +102,7 @@ impl<I: U32Lane<F = L>, L: Math> CameraSample<I> {
         let (open, close, last) = shutter_terms(shutter.0, shutter.1);
         let (open, close, last) = (L::c(open as f64), L::c(close as f64), L::c(last as f64));
         let t = sobol(index, 0, time_seed);
-        let time = open * (L::c(1.0) - t) + close * t;
+        let time = open * (L::ONE - t) + close * t;
         let time = L::select(time.ge(close), last, time);
         let time = L::select(time.lt(open), open, time);
         Self {

@@ -35,10 +35,10 @@ impl<V: Point3<Lane = L>, L: Math> Frame<V> {
     #[inline]
     pub fn from_normal(n: V) -> Self {
         let n = n.to_lanes();
-        let s = L::c(1.0).copysign(n.z);
+        let s = L::ONE.copysign(n.z);
         let a = L::c(-1.0) / (s + n.z);
         let b = n.x * n.y * a;
-        let t = V3::new((s * n.x * n.x).mul_add(a, L::c(1.0)), s * b, -(s * n.x));
+        let t = V3::new((s * n.x * n.x).mul_add(a, L::ONE), s * b, -(s * n.x));
         let bt = V3::new(b, (n.y * n.y).mul_add(a, s), -n.y);
         Self {
             t: V::from_lanes(t.canon()),

@@ -1,9 +1,9 @@
-//! Float lanes: [`Lane`] and [`Lane32`] for `f32`, [`F32x8`] and the `f64` reference.
+//! Float lanes: [`Lane`] for `f32`, [`F32x8`] and the `f64` reference.
 
 use core::fmt::Debug;
 use core::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
 
-use super::int::{U32Lane, U32x8};
+use wide::u32x8;
 
 /// Eight f32 lanes (`wide::f32x8`): the packet lane. Masks are `F32x8` values with all bits set
 /// or clear. Re-exported as [`crate::x8::F32x8`].
@@ -50,6 +50,14 @@ pub trait Lane:
     /// A constant. Written as `f64` so that the reference instance gets full precision; the f32
     /// instances round it once, at compile time.
     fn c(x: f64) -> Self;
+    /// 0 in every lane.
+    const ZERO: Self;
+    /// 1 in every lane.
+    const ONE: Self;
+    /// 2 in every lane.
+    const TWO: Self;
+    /// ½ in every lane.
+    const HALF: Self;
 
     /// `self · b + c`, with one rounding when the build has FMA and two otherwise, the same in
     /// both widths.
@@ -113,17 +121,6 @@ pub trait Lane:
     }
 }
 
-/// Lanes of IEEE single precision, with access to their bits: the instances that run the crate's
-/// own polynomials.
-pub trait Lane32: Lane {
-    /// The integer lane of the same width.
-    type U: U32Lane;
-    /// The bits of each lane.
-    fn to_bits(self) -> Self::U;
-    /// The lanes whose bits are `u`.
-    fn from_bits(u: Self::U) -> Self;
-}
-
 // ---------------------------------------------------------------------------------------------
 // f32
 
@@ -172,6 +169,10 @@ macro_rules! scalar_compares {
 
 impl Lane for f32 {
     type Mask = bool;
+    const ZERO: Self = 0.0;
+    const ONE: Self = 1.0;
+    const TWO: Self = 2.0;
+    const HALF: Self = 0.5;
 
     inline_fns! {
         fn c(x: f64) -> Self { x as f32 }
@@ -185,31 +186,27 @@ impl Lane for f32 {
     scalar_compares!();
 }
 
-impl Lane32 for f32 {
-    type U = u32;
-    inline_fns! {
-        fn to_bits(self) -> u32 { f32::to_bits(self) }
-        fn from_bits(u: u32) -> Self { f32::from_bits(u) }
-    }
-}
-
 // ---------------------------------------------------------------------------------------------
 // F32x8
 
 impl Lane for F32x8 {
     type Mask = F32x8;
+    const ZERO: Self = F32x8::new([0.0; 8]);
+    const ONE: Self = F32x8::new([1.0; 8]);
+    const TWO: Self = F32x8::new([2.0; 8]);
+    const HALF: Self = F32x8::new([0.5; 8]);
 
     inline_fns! {
         fn c(x: f64) -> Self { F32x8::splat(x as f32) }
         fn mul_add(self, b: Self, c: Self) -> Self { F32x8::mul_add(self, b, c) }
         fn sqrt(self) -> Self { F32x8::sqrt(self) }
-        fn abs(self) -> Self { F32x8::from_bits(F32x8::to_bits(self) & U32x8::splat(0x7fff_ffff)) }
+        fn abs(self) -> Self { F32x8::from_bits(F32x8::to_bits(self) & u32x8::splat(0x7fff_ffff)) }
     }
     #[inline(always)]
     fn copysign(self, sign: Self) -> Self {
         F32x8::from_bits(
-            (F32x8::to_bits(self) & U32x8::splat(0x7fff_ffff))
-                | (F32x8::to_bits(sign) & U32x8::splat(0x8000_0000)),
+            (F32x8::to_bits(self) & u32x8::splat(0x7fff_ffff))
+                | (F32x8::to_bits(sign) & u32x8::splat(0x8000_0000)),
         )
     }
     inline_fns! {
@@ -222,19 +219,15 @@ impl Lane for F32x8 {
     }
 }
 
-impl Lane32 for F32x8 {
-    type U = U32x8;
-    inline_fns! {
-        fn to_bits(self) -> U32x8 { F32x8::to_bits(self) }
-        fn from_bits(u: U32x8) -> Self { F32x8::from_bits(u) }
-    }
-}
-
 // ---------------------------------------------------------------------------------------------
 // f64: the reference instance
 
 impl Lane for f64 {
     type Mask = bool;
+    const ZERO: Self = 0.0;
+    const ONE: Self = 1.0;
+    const TWO: Self = 2.0;
+    const HALF: Self = 0.5;
 
     #[inline(always)]
     fn c(x: f64) -> Self {

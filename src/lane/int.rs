@@ -1,5 +1,5 @@
-//! The 32-bit integer lane, `u32` and [`U32x8`]: the bits of the float lanes, and what the
-//! sequence generators are written over.
+//! The 32-bit integer lane, `u32` and [`U32x8`], that the sequence generators are written over,
+//! and [`Lane32`]: the f32 lanes with access to their bits in it.
 
 use core::fmt::Debug;
 use core::ops::{Add, BitAnd, BitOr, BitXor, Shl, Shr, Sub};
@@ -221,6 +221,36 @@ impl Divisor {
             .wrapping_add(n.wrapping_sub(t).shr(self.shift1))
             .shr(self.shift2);
         (q, n.wrapping_sub(q.wrapping_mul(U::splat(self.d))))
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The bits of the float lanes
+
+/// Lanes of IEEE single precision, with access to their bits: the instances that run the crate's
+/// own polynomials.
+pub trait Lane32: Lane {
+    /// The integer lane of the same width.
+    type U: U32Lane;
+    /// The bits of each lane.
+    fn to_bits(self) -> Self::U;
+    /// The lanes whose bits are `u`.
+    fn from_bits(u: Self::U) -> Self;
+}
+
+impl Lane32 for f32 {
+    type U = u32;
+    inline_fns! {
+        fn to_bits(self) -> u32 { f32::to_bits(self) }
+        fn from_bits(u: u32) -> Self { f32::from_bits(u) }
+    }
+}
+
+impl Lane32 for F32x8 {
+    type U = U32x8;
+    inline_fns! {
+        fn to_bits(self) -> U32x8 { F32x8::to_bits(self) }
+        fn from_bits(u: U32x8) -> Self { F32x8::from_bits(u) }
     }
 }
 

@@ -22,10 +22,11 @@
 //!
 //! # Files
 //!
-//! - `float`: [`Lane`] (arithmetic, compares to a [`Mask`], selects) and [`Lane32`] (the bits of
-//!   an f32 lane), for `f32`, [`F32x8`] and `f64`;
+//! - `float`: [`Lane`] (arithmetic, compares to a [`Mask`], selects) for `f32`, [`F32x8`] and
+//!   `f64`;
 //! - `int`: [`U32Lane`], the 32-bit integer lane of the same two widths (`u32`, [`U32x8`]) that
-//!   the float lanes' bits and the sequence generators use;
+//!   the sequence generators use, and [`Lane32`], the f32 lanes with their bits in it. It stands
+//!   on `float`, which needs no integer lane, so the files import in one direction;
 //! - `vector`: [`V2`] and [`V3`], vectors whose components are lanes, and their conversions to
 //!   glam's types.
 
@@ -42,6 +43,6 @@ mod float;
 mod int;
 mod vector;
 
-pub use float::{F32x8, Lane, Lane32, Mask};
-pub use int::{U32Lane, U32x8};
+pub use float::{F32x8, Lane, Mask};
+pub use int::{Lane32, U32Lane, U32x8};
 pub use vector::{V2, V3};

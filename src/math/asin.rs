@@ -16,9 +16,9 @@ const ASIN_P: [f32; 5] = bits([
 /// for NaN.
 #[inline(always)]
 fn core<L: Lane32>(a: L) -> (L, L::Mask) {
-    let big = a.gt(L::c(0.5));
+    let big = a.gt(L::HALF);
     // 1 − a is exact for a ∈ [½, 1] (Sterbenz), and so is the halving.
-    let h = (L::c(1.0) - a) * L::c(0.5);
+    let h = (L::ONE - a) * L::HALF;
     let z = L::select(big, h, a * a);
     let s = L::select(big, h.sqrt(), a);
     let w = (s * z).mul_add(horner(z, ASIN_P), s);
@@ -32,8 +32,8 @@ pub fn asin<L: Lane32>(x: L) -> L {
     // big: π/2 − 2w = 2·((π/4)_hi − w) + 2·(π/4)_lo. (π/4)_hi − w ∈ [0.26, 0.53] rounds to a
     // quarter of an ulp of the result; rounding 2w ≈ 1 instead would cost a whole one.
     let d = L::select(big, L::c(PIO4_HI as f64) - w, w);
-    let k = L::select(big, L::c(2.0), L::c(1.0));
-    let lo = L::select(big, L::c(2.0 * PIO4_LO as f64), L::c(0.0));
+    let k = L::select(big, L::TWO, L::ONE);
+    let lo = L::select(big, L::c(2.0 * PIO4_LO as f64), L::ZERO);
     d.mul_add(k, lo).copysign(x)
 }
 
@@ -42,9 +42,9 @@ pub fn asin<L: Lane32>(x: L) -> L {
 pub fn acos<L: Lane32>(x: L) -> L {
     let (w, big) = core(x.abs());
     // |x| ≤ ½: π/2 − asin x. x > ½: 2w. x < −½: π − 2w. As k·π/4 + v:
-    let neg = x.lt(L::c(0.0));
-    let k = L::select(big, L::select(neg, L::c(4.0), L::c(0.0)), L::c(2.0));
+    let neg = x.lt(L::ZERO);
+    let k = L::select(big, L::select(neg, L::c(4.0), L::ZERO), L::TWO);
     // v = 2w·sign(x) when big, −w·sign(x) otherwise.
-    let v = L::select(big, w * L::c(2.0), w).copysign(L::select(big, x, -x));
+    let v = L::select(big, w * L::TWO, w).copysign(L::select(big, x, -x));
     k.mul_add(L::c(PIO4_HI as f64), k.mul_add(L::c(PIO4_LO as f64), v))
 }

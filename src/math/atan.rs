@@ -27,32 +27,32 @@ pub fn atan2<L: Lane32>(y: L, x: L) -> L {
     let mut mn = L::select(swap, ax, ay);
     let mut mx = L::select(swap, ay, ax);
     // Keep mn + mx finite: a common power-of-two scale does not change the ratio.
-    let sc = L::select(mx.gt(L::c(TWO_126 as f64)), L::c(0.25), L::c(1.0));
+    let sc = L::select(mx.gt(L::c(TWO_126 as f64)), L::c(0.25), L::ONE);
     mn = mn * sc;
     mx = mx * sc;
     // Both infinite: the ratio is taken as 1 (atan2(±∞, ±∞) = ±π/4, ±3π/4).
     let both_inf = mn.eq(inf) & mx.eq(inf);
-    mn = L::select(both_inf, L::c(1.0), mn);
-    mx = L::select(both_inf, L::c(1.0), mx);
+    mn = L::select(both_inf, L::ONE, mn);
+    mx = L::select(both_inf, L::ONE, mx);
 
     // mn/mx ∈ [0, 1]. Above ½, use atan(mn/mx) = π/4 + atan((mn − mx)/(mn + mx)), with one
     // division either way; mn − mx is exact there (Sterbenz), and the quotient is in (−⅓, 0].
-    let big = mn.gt(mx * L::c(0.5));
+    let big = mn.gt(mx * L::HALF);
     let num = L::select(big, mn - mx, mn);
     let den = L::select(big, mn + mx, mx);
     // (0, 0): 0/0 would be NaN; 0/1 gives 0, and the signs below give IEEE's ±0 and ±π.
-    let den = L::select(den.eq(L::c(0.0)), L::c(1.0), den);
+    let den = L::select(den.eq(L::ZERO), L::ONE, den);
     let t = num / den;
 
     // angle = k·π/4 + p, then π/2 − angle if swapped, then π − angle if x is negative (by its
     // sign bit, so that x = −0 gives π like IEEE atan2). The sign is applied to t (atan is odd),
     // and k·(π/4)_lo joins the small terms of the polynomial, so that the sum is rounded twice:
     // once adding t, once adding k·(π/4)_hi.
-    let one = L::c(1.0);
-    let xneg = one.copysign(x).lt(L::c(0.0));
-    let mut k = L::select(big, one, L::c(0.0));
+    let one = L::ONE;
+    let xneg = one.copysign(x).lt(L::ZERO);
+    let mut k = L::select(big, one, L::ZERO);
     let mut t = t;
-    k = L::select(swap, L::c(2.0) - k, k);
+    k = L::select(swap, L::TWO - k, k);
     t = L::select(swap, -t, t);
     k = L::select(xneg, L::c(4.0) - k, k);
     t = L::select(xneg, -t, t);

@@ -47,13 +47,13 @@ pub fn exp<L: Lane32>(x: L) -> L {
     // at 89 and 0 at −104 already.
     let xc = x.clamp(L::c(-104.0), L::c(89.0));
     let (n, r, _, _) = reduce(xc);
-    let y = L::c(1.0) + expm1_poly(r);
+    let y = L::ONE + expm1_poly(r);
     // 2ⁿ in two factors so that n = 128 and n < −126 work: 2^(n−1)·2 for n > 0,
     // 2^(n+64)·2^-64 otherwise (the second product rounds once, also to a subnormal).
-    let pos = n.gt(L::c(0.0));
-    let d = L::select(pos, L::c(1.0), L::c(-64.0));
+    let pos = n.gt(L::ZERO);
+    let d = L::select(pos, L::ONE, L::c(-64.0));
     let s1 = pow2::<L>((n - d + L::c(MAGIC as f64)).to_bits());
-    let s2 = L::select(pos, L::c(2.0), L::c(TWO_M64 as f64));
+    let s2 = L::select(pos, L::TWO, L::c(TWO_M64 as f64));
     (y * s1) * s2
 }
 
@@ -69,7 +69,7 @@ pub fn exp_m1<L: Lane32>(x: L) -> L {
     // s − ½ (n ≤ 24) are exact, and so is their sum for n = 0 and n = 1, where the result is
     // smallest; n = 0 gives r + small rounded once; n = 128 still fits.
     let s = pow2::<L>(tb - L::U::splat(1));
-    let y = s.mul_add(small, s.mul_add(r, s - L::c(0.5))) * L::c(2.0);
+    let y = s.mul_add(small, s.mul_add(r, s - L::HALF)) * L::TWO;
     // Tiny x (and ±0, and subnormals, which the halving above would round): x itself.
     L::select(x.abs().lt(L::c(TWO_M25 as f64)), x, y)
 }

@@ -29,7 +29,7 @@ fn split<L: Lane32>(x: L) -> (L, L, L::U) {
     let eb = ix >> 23;
     let m = L::from_bits((ix & L::U::splat(0x007f_ffff)) + L::U::splat(SQRT_HALF_BITS));
     let e = L::from_bits(eb | L::U::splat(0x4b00_0000)) - L::c(EXP_BIAS_F as f64);
-    (e, m - L::c(1.0), eb)
+    (e, m - L::ONE, eb)
 }
 
 /// ln(1 + f) − f = f²·Q(f).
@@ -56,31 +56,31 @@ pub fn ln<L: Lane32>(x: L) -> L {
     let sub = x.lt(L::c(f32::MIN_POSITIVE as f64));
     let xs = L::select(sub, x * L::c(16_777_216.0), x);
     let (e, f, _) = split(xs);
-    let e = e - L::select(sub, L::c(24.0), L::c(0.0));
+    let e = e - L::select(sub, L::c(24.0), L::ZERO);
     let r = sum(e, f, tail(f));
     let r = L::select(x.eq(L::c(f64::INFINITY)), x, r);
-    let r = L::select(x.eq(L::c(0.0)), L::c(f64::NEG_INFINITY), r);
-    L::select(x.ge(L::c(0.0)), r, L::c(f64::NAN))
+    let r = L::select(x.eq(L::ZERO), L::c(f64::NEG_INFINITY), r);
+    L::select(x.ge(L::ZERO), r, L::c(f64::NAN))
 }
 
 /// ln(1 + x). ln_1p(−1) = −∞, NaN for x < −1, +∞ at +∞; tiny x gives x.
 #[inline(always)]
 pub fn ln_1p<L: Lane32>(x: L) -> L {
-    let one = L::c(1.0);
+    let one = L::ONE;
     let u = one + x;
     // The rounding error of 1 + x, exactly (Fast2Sum with the larger operand first).
     let c = L::select(x.abs().lt(one), x - (u - one), one - (u - x));
     let (e, f, eb) = split(u);
     // e = 0: u = 1 + f and f + c = x exactly, so use x itself.
-    let e0 = e.eq(L::c(0.0));
+    let e0 = e.eq(L::ZERO);
     // Otherwise ln(u + c) = ln u + c/u, and c/u = c'/(1 + f) ≈ c'·(1 − f + f²) with c' = c·2^-e
     // (|c'| ≤ 2^-24, so the error of the approximation, c'·f³, stays below 0.1 ulp).
     // 2^(1−e) from bits: (255 − eb) << 23; eb & 0xff keeps NaN bits from underflowing.
     let two_pow = L::from_bits((L::U::splat(255) - (eb & L::U::splat(0xff))) << 23);
-    let half_recip = f.mul_add(f.mul_add(L::c(0.5), L::c(-0.5)), L::c(0.5));
+    let half_recip = f.mul_add(f.mul_add(L::HALF, L::c(-0.5)), L::HALF);
     let corr = (c * two_pow) * half_recip;
     let v = L::select(e0, x, f);
-    let corr = L::select(e0, L::c(0.0), corr);
+    let corr = L::select(e0, L::ZERO, corr);
     let r = sum(e, v, tail(v) + corr);
     // x itself for +∞, and for |x| < 2^-25 (where ln(1 + x) rounds to x; this also keeps −0).
     let keep = x.abs().lt(L::c(TWO_M25 as f64)) | x.eq(L::c(f64::INFINITY));

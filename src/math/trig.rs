@@ -25,7 +25,7 @@ const COS_R: [f32; 4] = [
 #[inline(always)]
 fn kernel_rad<L: Lane>(r: L, lo: L) -> (L, L) {
     let z = r * r;
-    let c = z.mul_add(horner(z, COS_R), L::c(1.0));
+    let c = z.mul_add(horner(z, COS_R), L::ONE);
     let s = (r * z).mul_add(horner(z, SIN_R), lo * c) + r;
     (s, c)
 }
@@ -67,7 +67,7 @@ const COS_V: [f32; 4] = scale_pow2(COS_T, 4.0, 4.0);
 fn kernel_eighths<L: Lane>(t: L, a1_hi: f32, sp: [f32; 4], cp: [f32; 4]) -> (L, L) {
     let z = t * t;
     let s = t.mul_add(L::c(a1_hi as f64), t * horner(z, sp));
-    let c = z.mul_add(horner(z, cp), L::c(1.0));
+    let c = z.mul_add(horner(z, cp), L::ONE);
     (s, c)
 }
 
@@ -97,7 +97,7 @@ fn flip<L: Lane32>(x: L, s: L::U) -> L {
 pub fn sin_cos<L: Lane32>(x: L) -> (L, L) {
     // Beyond 2²² the quadrant no longer fits the magic-number rounding (and an ulp of x is half a
     // radian): give (±0, 1) there, NaN for ±∞.
-    let x = L::select(x.abs().le(L::c(LIMIT as f64)), x, x * L::c(0.0));
+    let x = L::select(x.abs().le(L::c(LIMIT as f64)), x, x * L::ZERO);
     // t = MAGIC + j with j = round(x·2/π); its low bits are those of j.
     let t = x.mul_add(L::c(FRAC_2_PI as f64), L::c(MAGIC as f64));
     let j = t - L::c(MAGIC as f64);
@@ -117,13 +117,13 @@ pub fn sin_cos<L: Lane32>(x: L) -> (L, L) {
 
     let tb = t.to_bits();
     // Quadrant j mod 4: odd swaps sin and cos; sin is negated for j ≡ 2, 3, cos for j ≡ 1, 2.
-    let odd = L::from_bits(((tb & L::U::splat(1)) << 31) | L::U::splat(0x3f80_0000)).lt(L::c(0.0));
+    let odd = L::from_bits(((tb & L::U::splat(1)) << 31) | L::U::splat(0x3f80_0000)).lt(L::ZERO);
     let sin_sign = (tb & L::U::splat(2)) << 30;
     let cos_sign = (((tb & L::U::splat(3)) + L::U::splat(1)) & L::U::splat(2)) << 30;
     let sn = flip(L::select(odd, c, s), sin_sign);
     let cs = flip(L::select(odd, s, c), cos_sign);
     // sin(±0) = ±0 (the reduction turns −0 into +0).
-    (L::select(x.eq(L::c(0.0)), x, sn), cs)
+    (L::select(x.eq(L::ZERO), x, sn), cs)
 }
 
 /// sin 2πu and cos 2πu, with exact reduction in u.
@@ -142,12 +142,12 @@ pub fn sincos_2pi<L: Lane32>(u: L) -> (L, L) {
     //   q = 0: ( s,  c)   q = 1: ( c, −s)   q = ±2: (−s, −c)   q = −1: (−c,  s).
     // −s is the kernel at −f, so negate f for q ∈ {1, ±2}; q − 4r (not −(4r − q)) keeps f = 0 at
     // +0, so that exact quarter turns give +0, never −0.
-    let neg = q.gt(L::c(0.5)) | q.lt(L::c(-1.5));
+    let neg = q.gt(L::HALF) | q.lt(L::c(-1.5));
     let f = L::select(neg, q - r4, r4 - q);
     let (s, c) = kernel_eighths(f, A1_HI_V, SIN_V, COS_V);
     let aq = q.abs();
-    let swap = aq.eq(L::c(1.0));
-    let c_for_sin = L::select(q.lt(L::c(0.0)), -c, c);
+    let swap = aq.eq(L::ONE);
+    let c_for_sin = L::select(q.lt(L::ZERO), -c, c);
     let c_for_cos = L::select(aq.gt(L::c(1.5)), -c, c);
     (L::select(swap, c_for_sin, s), L::select(swap, s, c_for_cos))
 }

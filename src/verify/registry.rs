@@ -308,11 +308,11 @@ impl Sampler {
         match *self {
             Sampler::ConcentricDisk => visit.visit(|u| {
                 let p = warp::concentric_disk(u);
-                (V3::new(p.x, p.y, L::c(0.0)), warp::uniform_disk_pdf(p))
+                (V3::new(p.x, p.y, L::ZERO), warp::uniform_disk_pdf(p))
             }),
             Sampler::PolarDisk => visit.visit(|u| {
                 let p = warp::polar_disk(u);
-                (V3::new(p.x, p.y, L::c(0.0)), warp::uniform_disk_pdf(p))
+                (V3::new(p.x, p.y, L::ZERO), warp::uniform_disk_pdf(p))
             }),
             Sampler::UniformHemisphere => visit.visit(|u| {
                 let w = warp::uniform_hemisphere(u);
@@ -347,7 +347,7 @@ impl Sampler {
             Sampler::Tent => visit.visit(|u: V2<L>| {
                 // A pair of tents is one 2D sample: NaN in either coordinate drops both.
                 let t = V2::new(warp::tent(u.x), warp::tent(u.y)).nan_where(u.any_nan());
-                let x = V3::new(t.x, t.y, L::c(0.0));
+                let x = V3::new(t.x, t.y, L::ZERO);
                 (x, warp::tent_pdf(x.x) * warp::tent_pdf(x.y))
             }),
             // The geometry passes through `black_box` so that a loop over a batch pays the
@@ -377,8 +377,8 @@ impl Sampler {
         let x = x.to_lanes();
         match *self {
             Sampler::ConcentricDisk | Sampler::PolarDisk => {
-                let inside = x.z.eq(L::c(0.0));
-                L::select(inside, warp::uniform_disk_pdf(V2::new(x.x, x.y)), L::c(0.0))
+                let inside = x.z.eq(L::ZERO);
+                L::select(inside, warp::uniform_disk_pdf(V2::new(x.x, x.y)), L::ZERO)
             }
             Sampler::UniformHemisphere => warp::uniform_hemisphere_pdf(x),
             Sampler::CosineHemisphere => warp::cosine_hemisphere_pdf(x.z),

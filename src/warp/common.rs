@@ -15,7 +15,7 @@ pub(crate) fn clamp_u<L: Math>(u: V2<L>) -> V2<L> {
 
 #[inline(always)]
 pub(crate) fn clamp01<L: Math>(x: L) -> L {
-    x.clamp(L::c(0.0), L::c(1.0))
+    x.clamp(L::ZERO, L::ONE)
 }
 
 /// The azimuth of (x, y) as a fraction of a turn, in [0, 1).
@@ -25,7 +25,7 @@ pub(crate) fn clamp01<L: Math>(x: L) -> L {
 #[inline(always)]
 pub(crate) fn azimuth_fraction<L: Math>(x: L, y: L) -> L {
     let v = y.atan2(x) * L::c(1.0 / core::f64::consts::TAU);
-    let v = L::select(v.lt(L::c(0.0)), v + L::c(1.0), v);
+    let v = L::select(v.lt(L::ZERO), v + L::ONE, v);
     // NaN goes in the second operand of min, which returns it.
     L::c(ONE_MINUS_EPS as f64).min(v)
 }
@@ -33,7 +33,7 @@ pub(crate) fn azimuth_fraction<L: Math>(x: L, y: L) -> L {
 /// sin θ from t = 1 − cos θ, as √(t(2 − t)): no cancellation near the pole, unlike √(1 − cos²θ).
 #[inline(always)]
 pub(crate) fn sin_from_one_minus_cos<L: Math>(t: L) -> L {
-    (t * (L::c(2.0) - t)).max(L::c(0.0)).sqrt()
+    (t * (L::TWO - t)).max(L::ZERO).sqrt()
 }
 
 /// 1 − z of a unit vector, as (x² + y²)/(1 + z) in the upper half, where 1 − z would cancel
@@ -41,5 +41,5 @@ pub(crate) fn sin_from_one_minus_cos<L: Math>(t: L) -> L {
 #[inline(always)]
 pub(crate) fn one_minus_z<L: Math>(w: V3<L>) -> L {
     let rho2 = w.x.mul_add(w.x, w.y * w.y);
-    L::select(w.z.gt(L::c(0.0)), rho2 / (L::c(1.0) + w.z), L::c(1.0) - w.z)
+    L::select(w.z.gt(L::ZERO), rho2 / (L::ONE + w.z), L::ONE - w.z)
 }

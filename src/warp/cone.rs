@@ -17,15 +17,15 @@ const H_MAX: f64 = 2.0;
 /// [`cone_h_from_sin2`] when sin²θmax is at hand.
 #[inline(always)]
 pub fn cone_h_from_cos<L: Math>(cos_max: L) -> L {
-    (L::c(1.0) - cos_max).clamp(L::c(0.0), L::c(H_MAX)).canon()
+    (L::ONE - cos_max).clamp(L::ZERO, L::c(H_MAX)).canon()
 }
 
 /// h = 1 − cos θmax from sin²θmax (θmax ≤ π/2), as s²/(1 + √(1 − s²)): exact algebra, with no
 /// cancellation at any size and no threshold. s² is clamped to [0, 1]; NaN gives NaN.
 #[inline(always)]
 pub fn cone_h_from_sin2<L: Math>(sin2_max: L) -> L {
-    let s2 = sin2_max.clamp(L::c(0.0), L::c(1.0));
-    (s2 / (L::c(1.0) + (L::c(1.0) - s2).sqrt())).canon()
+    let s2 = sin2_max.clamp(L::ZERO, L::ONE);
+    (s2 / (L::ONE + (L::ONE - s2).sqrt())).canon()
 }
 
 /// Square → cone about +z with h = 1 − cos θmax, uniform in solid angle (pdf 1/(2πh) per
@@ -38,11 +38,11 @@ pub fn cone_h_from_sin2<L: Math>(sin2_max: L) -> L {
 #[inline(always)]
 pub fn uniform_cone<P: Point2<Lane = L>, L: Math>(u: P, h: L) -> P::Vec3 {
     let u = clamp_u(u.to_lanes());
-    let h = h.clamp(L::c(0.0), L::c(H_MAX));
+    let h = h.clamp(L::ZERO, L::c(H_MAX));
     let t = u.x * h;
     let sin_theta = sin_from_one_minus_cos(t);
     let (s, c) = u.y.sincos_2pi();
-    let w = V3::new(sin_theta * c, sin_theta * s, L::c(1.0) - t);
+    let w = V3::new(sin_theta * c, sin_theta * s, L::ONE - t);
     Point3::from_lanes(w.nan_where(u.any_nan() | h.is_nan()))
 }
 
@@ -64,7 +64,7 @@ pub fn uniform_cone_pdf<P: Point3<Lane = L>, L: Math>(w: P, h: L) -> L {
     // 1 − cos θ reads x and y only above the equator: NaN there must still give 0.
     let inside = one_minus_z(w).le(bound) & !w.any_nan();
     let p = L::c(0.5 * core::f64::consts::FRAC_1_PI) / h;
-    L::select(h.gt(L::c(0.0)) & inside & p.is_finite(), p, L::c(0.0))
+    L::select(h.gt(L::ZERO) & inside & p.is_finite(), p, L::ZERO)
 }
 
 /// Inverse of [`uniform_cone`]: u₀ = t/h with t = 1 − z = (x² + y²)/(1 + z) (no cancellation near
@@ -72,7 +72,7 @@ pub fn uniform_cone_pdf<P: Point3<Lane = L>, L: Math>(w: P, h: L) -> L {
 #[inline(always)]
 pub fn uniform_cone_inverse<P: Point3<Lane = L>, L: Math>(w: P, h: L) -> P::Vec2 {
     let w = w.to_lanes();
-    let u0 = (one_minus_z(w) / h).clamp(L::c(0.0), L::c(1.0));
+    let u0 = (one_minus_z(w) / h).clamp(L::ZERO, L::ONE);
     let u = V2::new(u0, azimuth_fraction(w.x, w.y));
     Point2::from_lanes(u.nan_where(w.any_nan() | h.is_nan()))
 }

@@ -18,18 +18,18 @@ use crate::warp::common::{azimuth_fraction, clamp_u};
 #[inline(always)]
 pub(crate) fn concentric_with_one_minus_r<L: Math>(u: V2<L>) -> (V2<L>, L) {
     let u = clamp_u(u);
-    let a = u.x.mul_add(L::c(2.0), L::c(-1.0));
-    let b = u.y.mul_add(L::c(2.0), L::c(-1.0));
+    let a = u.x.mul_add(L::TWO, L::c(-1.0));
+    let b = u.y.mul_add(L::TWO, L::c(-1.0));
     let a_major = a.abs().gt(b.abs());
     let r = L::select(a_major, a, b);
     let other = L::select(a_major, b, a);
     // At the centre r = 0: t = 0 keeps the result at the origin instead of 0/0.
-    let t = L::select(r.eq(L::c(0.0)), L::c(0.0), other / r);
+    let t = L::select(r.eq(L::ZERO), L::ZERO, other / r);
     let (s, c) = t.sincos_pi4();
     // Wedge |a| > |b|: φ = (π/4)t. Otherwise φ = π/2 − (π/4)t, which swaps sin and cos.
     let p = V2::new(r * L::select(a_major, c, s), r * L::select(a_major, s, c));
     let u_major = L::select(a_major, u.x, u.y);
-    let one_minus_r = L::c(2.0) * u_major.min(L::c(1.0) - u_major);
+    let one_minus_r = L::TWO * u_major.min(L::ONE - u_major);
     (p, one_minus_r)
 }
 
@@ -56,14 +56,14 @@ pub fn concentric_disk_inverse<P: Point2<Lane = L>, L: Math>(p: P) -> P {
     let minor = L::select(x_major, p.y, p.x);
     let r = p.length_squared().sqrt().copysign(major);
     // atan(minor/major) with |minor| ≤ |major|, written as atan2 so that major = 0 is harmless.
-    let phi = (minor * L::c(1.0).copysign(major)).atan2(major.abs());
+    let phi = (minor * L::ONE.copysign(major)).atan2(major.abs());
     let t = phi * L::c(4.0 / core::f64::consts::PI);
     let a = L::select(x_major, r, r * t);
     let b = L::select(x_major, r * t, r);
     // A point a rounding outside the disk would map a rounding outside the square: clamp.
     let u = clamp_u(V2::new(
-        a.mul_add(L::c(0.5), L::c(0.5)),
-        b.mul_add(L::c(0.5), L::c(0.5)),
+        a.mul_add(L::HALF, L::HALF),
+        b.mul_add(L::HALF, L::HALF),
     ));
     P::from_lanes(u.nan_where(p.any_nan()))
 }
@@ -84,7 +84,7 @@ pub fn polar_disk<P: Point2<Lane = L>, L: Math>(u: P) -> P {
 #[inline(always)]
 pub fn polar_disk_inverse<P: Point2<Lane = L>, L: Math>(p: P) -> P {
     let p = p.to_lanes();
-    let u0 = p.length_squared().min(L::c(1.0));
+    let u0 = p.length_squared().min(L::ONE);
     P::from_lanes(V2::new(u0, azimuth_fraction(p.x, p.y)).nan_where(p.any_nan()))
 }
 
@@ -99,5 +99,5 @@ pub fn uniform_disk_pdf<P: Point2<Lane = L>, L: Math>(p: P) -> L {
         .to_lanes()
         .length_squared()
         .le(L::c(1.0 + 1.0 / 1_048_576.0));
-    L::select(inside, L::c(core::f64::consts::FRAC_1_PI), L::c(0.0))
+    L::select(inside, L::c(core::f64::consts::FRAC_1_PI), L::ZERO)
 }

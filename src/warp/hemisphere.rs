@@ -15,7 +15,7 @@ use crate::warp::disk::{concentric_disk_inverse, concentric_with_one_minus_r};
 pub fn uniform_hemisphere<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
     let u = clamp_u(u.to_lanes());
     let z = u.x;
-    let r = ((L::c(1.0) - z) * (L::c(1.0) + z)).max(L::c(0.0)).sqrt();
+    let r = ((L::ONE - z) * (L::ONE + z)).max(L::ZERO).sqrt();
     let (s, c) = u.y.sincos_2pi();
     Point3::from_lanes(V3::new(r * c, r * s, z).nan_where(u.any_nan()))
 }
@@ -25,8 +25,8 @@ pub fn uniform_hemisphere<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
 #[inline(always)]
 pub fn uniform_hemisphere_pdf<P: Point3<Lane = L>, L: Math>(w: P) -> L {
     let w = w.to_lanes();
-    let inside = w.z.ge(L::c(0.0)) & !w.any_nan();
-    L::select(inside, L::c(0.5 * core::f64::consts::FRAC_1_PI), L::c(0.0))
+    let inside = w.z.ge(L::ZERO) & !w.any_nan();
+    L::select(inside, L::c(0.5 * core::f64::consts::FRAC_1_PI), L::ZERO)
 }
 
 /// Inverse of [`uniform_hemisphere`] for a unit direction: u = (z, azimuth/2π) in
@@ -48,9 +48,7 @@ pub fn uniform_hemisphere_inverse<P: Point3>(w: P) -> P::Vec2 {
 pub fn cosine_hemisphere<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
     let u = u.to_lanes();
     let (p, one_minus_r) = concentric_with_one_minus_r(u);
-    let z = (one_minus_r * (L::c(2.0) - one_minus_r))
-        .max(L::c(0.0))
-        .sqrt();
+    let z = (one_minus_r * (L::TWO - one_minus_r)).max(L::ZERO).sqrt();
     Point3::from_lanes(V3::new(p.x, p.y, z).nan_where(u.any_nan()))
 }
 
@@ -59,9 +57,9 @@ pub fn cosine_hemisphere<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
 #[inline(always)]
 pub fn cosine_hemisphere_pdf<L: Math>(cos_theta: L) -> L {
     L::select(
-        cos_theta.gt(L::c(0.0)),
+        cos_theta.gt(L::ZERO),
         cos_theta * L::c(core::f64::consts::FRAC_1_PI),
-        L::c(0.0),
+        L::ZERO,
     )
 }
 

@@ -11,7 +11,7 @@ pub const PHONG_N_MAX: f32 = 1.0e20;
 
 #[inline(always)]
 fn clamp_n<L: Math>(n: L) -> L {
-    n.clamp(L::c(0.0), L::c(PHONG_N_MAX as f64))
+    n.clamp(L::ZERO, L::c(PHONG_N_MAX as f64))
 }
 
 /// Square → Phong lobe about +z, pdf (n+1)/(2π)·cosⁿα per steradian ([`phong_lobe_pdf`]).
@@ -26,10 +26,10 @@ fn clamp_n<L: Math>(n: L) -> L {
 pub fn phong_lobe<P: Point2<Lane = L>, L: Math>(u: P, n: L) -> P::Vec3 {
     let u = clamp_u(u.to_lanes());
     let n = clamp_n(n);
-    let t = -(u.x.ln() / (n + L::c(1.0))).exp_m1();
+    let t = -(u.x.ln() / (n + L::ONE)).exp_m1();
     let sin_a = sin_from_one_minus_cos(t);
     let (s, c) = u.y.sincos_2pi();
-    let w = V3::new(sin_a * c, sin_a * s, L::c(1.0) - t);
+    let w = V3::new(sin_a * c, sin_a * s, L::ONE - t);
     Point3::from_lanes(w.nan_where(u.any_nan() | n.is_nan()))
 }
 
@@ -41,9 +41,9 @@ pub fn phong_lobe<P: Point2<Lane = L>, L: Math>(u: P, n: L) -> P::Vec3 {
 #[inline(always)]
 pub fn phong_lobe_pdf<L: Math>(cos_alpha: L, n: L) -> L {
     let n = clamp_n(n);
-    let norm = (n + L::c(1.0)) * L::c(0.5 * core::f64::consts::FRAC_1_PI);
-    let p = norm * (n * cos_alpha.min(L::c(1.0)).ln()).exp();
-    L::select(cos_alpha.gt(L::c(0.0)) & n.eq(n), p, L::c(0.0))
+    let norm = (n + L::ONE) * L::c(0.5 * core::f64::consts::FRAC_1_PI);
+    let p = norm * (n * cos_alpha.min(L::ONE).ln()).exp();
+    L::select(cos_alpha.gt(L::ZERO) & n.eq(n), p, L::ZERO)
 }
 
 /// Inverse of [`phong_lobe`]: u₀ = cos^{n+1}α = exp((n+1)·ln(1 − t)) with t = 1 − cos α taken
@@ -54,8 +54,8 @@ pub fn phong_lobe_inverse<P: Point3<Lane = L>, L: Math>(w: P, n: L) -> P::Vec2 {
     let w = w.to_lanes();
     let n = clamp_n(n);
     let t = one_minus_z(w);
-    let u0 = ((n + L::c(1.0)) * (-t).ln_1p()).exp();
-    let u0 = L::select(w.z.gt(L::c(0.0)), u0.min(L::c(1.0)), L::c(0.0));
+    let u0 = ((n + L::ONE) * (-t).ln_1p()).exp();
+    let u0 = L::select(w.z.gt(L::ZERO), u0.min(L::ONE), L::ZERO);
     let u = V2::new(u0, azimuth_fraction(w.x, w.y));
     Point2::from_lanes(u.nan_where(w.any_nan() | n.is_nan()))
 }

@@ -24,7 +24,7 @@ pub(crate) fn vos_solid_angle<L: Math>(
         lc,
         a.dot(b).mul_add(lc, a.dot(c).mul_add(lb, b.dot(c) * la)),
     );
-    L::c(2.0) * triple.abs().atan2(den)
+    L::TWO * triple.abs().atan2(den)
 }
 
 /// pdf per steradian of direction `w` (unit) when points are drawn uniformly by area on a planar
@@ -37,8 +37,8 @@ pub(crate) fn vos_solid_angle<L: Math>(
 pub(crate) fn area_pdf_solid_angle<L: Math>(w: V3<L>, h: L, n: V3<L>, k: L) -> L {
     let c = w.dot(n).abs();
     let p = k * (h * h) / (c * c * c);
-    let ok = h.abs().gt(L::c(0.0)) & c.gt(L::c(0.0)) & p.is_finite();
-    L::select(ok, p, L::c(0.0))
+    let ok = h.abs().gt(L::ZERO) & c.gt(L::ZERO) & p.is_finite();
+    L::select(ok, p, L::ZERO)
 }
 
 /// True where direction `w` lies inside the convex polygon with vertices `p` and edges
@@ -56,8 +56,8 @@ pub(crate) fn inside_polygon<L: Math, const N: usize>(
     e: [V3<L>; N],
     winding: L,
 ) -> L::Mask {
-    let sign = L::c(1.0).copysign(winding);
-    let side = |i: usize| (w.dot(p[i].cross(e[i])) * sign).ge(L::c(0.0));
+    let sign = L::ONE.copysign(winding);
+    let side = |i: usize| (w.dot(p[i].cross(e[i])) * sign).ge(L::ZERO);
     let mut inside = side(0);
     let mut i = 1;
     while i < N {

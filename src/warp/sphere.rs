@@ -13,8 +13,8 @@ use crate::warp::common::{azimuth_fraction, clamp_u, one_minus_z};
 #[inline(always)]
 pub fn uniform_sphere<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
     let u = clamp_u(u.to_lanes());
-    let z = u.x.mul_add(L::c(-2.0), L::c(1.0));
-    let r = L::c(2.0) * (u.x * (L::c(1.0) - u.x)).max(L::c(0.0)).sqrt();
+    let z = u.x.mul_add(L::c(-2.0), L::ONE);
+    let r = L::TWO * (u.x * (L::ONE - u.x)).max(L::ZERO).sqrt();
     let (s, c) = u.y.sincos_2pi();
     Point3::from_lanes(V3::new(r * c, r * s, z).nan_where(u.any_nan()))
 }
@@ -24,7 +24,7 @@ pub fn uniform_sphere<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
 #[inline(always)]
 pub fn uniform_sphere_pdf<P: Point3<Lane = L>, L: Math>(w: P) -> L {
     let nan = w.to_lanes().any_nan();
-    L::select(nan, L::c(0.0), L::c(0.25 * core::f64::consts::FRAC_1_PI))
+    L::select(nan, L::ZERO, L::c(0.25 * core::f64::consts::FRAC_1_PI))
 }
 
 /// Inverse of [`uniform_sphere`] for a unit direction, in [0, 1] × [0, 1): u₀ = (1 − z)/2, with
@@ -33,6 +33,6 @@ pub fn uniform_sphere_pdf<P: Point3<Lane = L>, L: Math>(w: P) -> L {
 #[inline(always)]
 pub fn uniform_sphere_inverse<P: Point3<Lane = L>, L: Math>(w: P) -> P::Vec2 {
     let w = w.to_lanes();
-    let u0 = (one_minus_z(w) * L::c(0.5)).clamp(L::c(0.0), L::c(1.0));
+    let u0 = (one_minus_z(w) * L::HALF).clamp(L::ZERO, L::ONE);
     Point2::from_lanes(V2::new(u0, azimuth_fraction(w.x, w.y)).nan_where(w.any_nan()))
 }

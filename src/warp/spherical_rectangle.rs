@@ -67,8 +67,8 @@ fn rect_solid_angle<L: Math>(x0: L, x1: L, y0: L, y1: L, z0: L) -> L {
 fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
     let exl = ex.length();
     let eyl = ey.length();
-    let xh = ex.scale(L::c(1.0) / exl);
-    let yh = ey.scale(L::c(1.0) / eyl);
+    let xh = ex.scale(L::ONE / exl);
+    let yh = ey.scale(L::ONE / eyl);
     let zh = xh.cross(yh);
     let x0 = corner.dot(xh);
     let y0 = corner.dot(yh);
@@ -93,14 +93,14 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
     // z0 ≈ 0: the shading point lies in the rectangle's plane (to within rounding), where VOS may
     // still report up to 4π.
     let valid = z0.lt(L::c(-1e-6) * corner.length())
-        & omega.gt(L::c(0.0))
+        & omega.gt(L::ZERO)
         & omega.is_finite()
-        & exl.gt(L::c(0.0))
-        & eyl.gt(L::c(0.0))
+        & exl.gt(L::ZERO)
+        & eyl.gt(L::ZERO)
         & (x0 + y0 + z0).is_finite();
     let by_area = omega.lt(L::c(SPHERICAL_RECTANGLE_MIN_SR as f64))
         | omega.gt(L::c(SPHERICAL_RECTANGLE_MAX_SR as f64))
-        | !s_map.gt(L::c(0.0));
+        | !s_map.gt(L::ZERO);
     Setup {
         corner,
         ex,
@@ -135,9 +135,8 @@ fn urena<L: Math>(s: &Setup<L>, u: V2<L>) -> (L, L) {
     let au = u.x.mul_add(s.s_map, s.k);
     let (sa, ca) = au.sin_cos();
     let fu = ca.mul_add(s.b0, -s.b1) / sa;
-    let cu =
-        (L::c(1.0).copysign(fu) / fu.mul_add(fu, s.b0 * s.b0).sqrt()).clamp(L::c(-1.0), L::c(1.0));
-    let sin_u = ((L::c(1.0) - cu) * (L::c(1.0) + cu)).max(L::c(0.0)).sqrt();
+    let cu = (L::ONE.copysign(fu) / fu.mul_add(fu, s.b0 * s.b0).sqrt()).clamp(L::c(-1.0), L::ONE);
+    let sin_u = ((L::ONE - cu) * (L::ONE + cu)).max(L::ZERO).sqrt();
     let xu = (-(cu * s.z0) / sin_u).clamp(s.x0, s.x1);
     let d = xu.mul_add(xu, s.z0 * s.z0).sqrt();
     let h0 = elevation(s.y0, d);
@@ -148,7 +147,7 @@ fn urena<L: Math>(s: &Setup<L>, u: V2<L>) -> (L, L) {
     let yv = L::select(
         hv2.ge(L::c(1.0 - 1e-6)),
         s.y1,
-        (hv * d) / (L::c(1.0) - hv2).sqrt(),
+        (hv * d) / (L::ONE - hv2).sqrt(),
     );
     (xu, yv.clamp(s.y0, s.y1))
 }
@@ -158,8 +157,8 @@ fn pdf_of<L: Math>(s: &Setup<L>, w: V3<L>) -> L {
     let n = s.ex.cross(s.ey);
     L::select(
         s.by_area,
-        area_pdf_solid_angle(w, s.corner.dot(n), n, L::c(1.0)),
-        L::c(1.0) / s.omega,
+        area_pdf_solid_angle(w, s.corner.dot(n), n, L::ONE),
+        L::ONE / s.omega,
     )
 }
 
@@ -200,7 +199,7 @@ pub fn spherical_rectangle<P: Point2<Lane = L>, L: Math>(
     let pdf = pdf_of(&s, p.normalize());
     let ok = s.valid & p.dot(p).is_finite();
     let p = V3::select(ok, p, corner);
-    (Point3::from_lanes(p), L::select(ok, pdf, L::c(0.0)))
+    (Point3::from_lanes(p), L::select(ok, pdf, L::ZERO))
 }
 
 /// pdf per steradian that [`spherical_rectangle`] returns a point in unit direction `w`; 0 when
@@ -216,7 +215,7 @@ pub fn spherical_rectangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, corner: P, ex
     let s = setup(corner, ex, ey);
     let quad = [corner, corner + ex, corner + ex + ey, corner + ey];
     let inside = inside_polygon(w, quad, [ex, ey, -ex, -ey], corner.dot(ex.cross(ey)));
-    L::select(s.valid & inside, pdf_of(&s, w), L::c(0.0))
+    L::select(s.valid & inside, pdf_of(&s, w), L::ZERO)
 }
 
 /// Inverse of [`spherical_rectangle`]: the u that maps to point `p` of the rectangle, in

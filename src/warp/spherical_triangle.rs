@@ -51,9 +51,9 @@ struct Setup<L: Math> {
 fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     let (la, lb, lc) = (a.length(), b.length(), c.length());
     let (ua, ub, uc) = (
-        a.scale(L::c(1.0) / la),
-        b.scale(L::c(1.0) / lb),
-        c.scale(L::c(1.0) / lc),
+        a.scale(L::ONE / la),
+        b.scale(L::ONE / lb),
+        c.scale(L::ONE / lc),
     );
     let e1 = b - a;
     let e2 = c - a;
@@ -72,7 +72,7 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     let h = V3::select(at_b, b, V3::select(at_c, c, a)).dot(n);
     // Scale-free triple product a·(b×c)/(|a||b||c|).
     let triple = h / (la * lb * lc);
-    let omega = vos_solid_angle(triple, ua, ub, uc, L::c(1.0), L::c(1.0), L::c(1.0));
+    let omega = vos_solid_angle(triple, ua, ub, uc, L::ONE, L::ONE, L::ONE);
 
     // The arcs c = AB and b = AC and the angle α at A come from the normals a×b and a×c of the
     // planes through A. a × b = a × (b − a): the shorter of b and b − a leaves the smaller
@@ -87,15 +87,15 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     // |(a×b)×(a×c)| = |a||a·(b×c)| = |a||h|, the well-conditioned offset, rather than from the
     // cross product of two nearly parallel normals, which loses α's relative precision when α is
     // small.
-    let inv = L::c(1.0) / (lab * lac);
-    let cos_alpha = (nab.dot(nac) * inv).clamp(L::c(-1.0), L::c(1.0));
-    let sin_alpha = (la * h.abs() * inv).min(L::c(1.0));
+    let inv = L::ONE / (lab * lac);
+    let cos_alpha = (nab.dot(nac) * inv).clamp(L::c(-1.0), L::ONE);
+    let sin_alpha = (la * h.abs() * inv).min(L::ONE);
     let one_minus_cos_c = versine(sin_c, cos_c);
     // δ = α − Ω/2 from the half-angle excess formula at E = Ω (see `arvo`):
     // tan δ = sin α / (cos α + tan(b/2) tan(c/2)), multiplied through by sin b sin c. For an
     // obtuse α the map wants π − α instead, which f32 cannot recover from α near π.
     let sbc = sin_b * sin_c;
-    let obtuse = cos_alpha.lt(L::c(0.0));
+    let obtuse = cos_alpha.lt(L::ZERO);
     let delta =
         (sin_alpha * sbc).atan2(cos_alpha.mul_add(sbc, versine(sin_b, cos_b) * one_minus_cos_c));
     let angle0 = L::select(obtuse, sin_alpha.atan2(-cos_alpha), delta);
@@ -106,17 +106,17 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     let nn = n.length();
     let valid = nn.gt(L::c(1e-6) * e1.length() * e2.length())
         & (h / la).abs().gt(L::c(1e-6) * nn)
-        & omega.gt(L::c(0.0))
+        & omega.gt(L::ZERO)
         & omega.is_finite()
         & delta.is_finite()
         & n.dot(n).is_finite()
-        & la.gt(L::c(0.0))
-        & lb.gt(L::c(0.0))
-        & lc.gt(L::c(0.0));
+        & la.gt(L::ZERO)
+        & lb.gt(L::ZERO)
+        & lc.gt(L::ZERO);
     let by_area = omega.lt(L::c(SPHERICAL_TRIANGLE_MIN_SR as f64))
         | omega.gt(L::c(SPHERICAL_TRIANGLE_MAX_SR as f64))
         | !delta.is_finite()
-        | sin_alpha.eq(L::c(0.0));
+        | sin_alpha.eq(L::ZERO);
     Setup {
         h,
         ua,
@@ -137,18 +137,14 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
 /// sin²θ / (1 + cos θ) where cos θ ≥ 0.
 #[inline(always)]
 fn versine<L: Math>(sin: L, cos: L) -> L {
-    L::select(
-        cos.ge(L::c(0.0)),
-        sin * sin / (L::c(1.0) + cos),
-        L::c(1.0) - cos,
-    )
+    L::select(cos.ge(L::ZERO), sin * sin / (L::ONE + cos), L::ONE - cos)
 }
 
 /// The component of `v` orthogonal to unit `u`, normalised.
 #[inline(always)]
 fn ortho<L: Math>(v: V3<L>, u: V3<L>) -> V3<L> {
     let w = v - u.scale(v.dot(u));
-    w.scale(L::c(1.0) / w.length())
+    w.scale(L::ONE / w.length())
 }
 
 /// Arvo's map: u₀ picks the sub-triangle A B Ĉ of area E = u₀Ω, u₁ the point along the arc B Ĉ.
@@ -162,26 +158,24 @@ fn ortho<L: Math>(v: V3<L>, u: V3<L>) -> V3<L> {
 /// cos b′, sin b′ follow from x and y without a root.
 #[inline(always)]
 fn arvo<L: Math>(s: &Setup<L>, u: V2<L>) -> V3<L> {
-    let half = u.x * s.omega * L::c(0.5);
+    let half = u.x * s.omega * L::HALF;
     let (h1, _) = half.sin_cos();
     // sin(α − E/2) as a sum of two non-negative angles, never a difference, which would cancel
     // as E nears Ω with α close to Ω/2, or for α near π: sin(δ + (1 − u₀)Ω/2) for an acute α,
     // sin(π − α + E/2) for an obtuse one.
-    let rest = L::select(s.obtuse, half, (L::c(1.0) - u.x) * (s.omega * L::c(0.5)));
+    let rest = L::select(s.obtuse, half, (L::ONE - u.x) * (s.omega * L::HALF));
     let (h2, _) = (s.angle0 + rest).sin_cos();
-    let x = s.one_minus_cos_c * h2.max(L::c(0.0));
+    let x = s.one_minus_cos_c * h2.max(L::ZERO);
     let y = s.sin_c * h1;
-    let r = L::c(1.0) / x.mul_add(x, y * y);
-    let cos_b = ((x - y) * (x + y) * r).clamp(L::c(-1.0), L::c(1.0));
-    let sin_b = L::c(2.0) * x * y * r;
+    let r = L::ONE / x.mul_add(x, y * y);
+    let cos_b = ((x - y) * (x + y) * r).clamp(L::c(-1.0), L::ONE);
+    let sin_b = L::TWO * x * y * r;
     let c_hat = s.ua.scale(cos_b) + ortho(s.uc, s.ua).scale(sin_b);
     // 1 − Ĉ·B as |Ĉ − B|²/2, so that z keeps its precision when Ĉ is close to B.
     let d = c_hat - s.ub;
-    let one_minus_z = u.y * (L::c(0.5) * d.dot(d));
-    let z = L::c(1.0) - one_minus_z;
-    let sin_z = (one_minus_z * (L::c(2.0) - one_minus_z))
-        .max(L::c(0.0))
-        .sqrt();
+    let one_minus_z = u.y * (L::HALF * d.dot(d));
+    let z = L::ONE - one_minus_z;
+    let sin_z = (one_minus_z * (L::TWO - one_minus_z)).max(L::ZERO).sqrt();
     // Each step is accurate to a few ulp, but their rounding leaves |w| off 1 by up to 1e-5 for
     // wide triangles: renormalise, which also pulls the point back onto the sphere's triangle.
     (s.ub.scale(z) + ortho(c_hat, s.ub).scale(sin_z)).normalize()
@@ -197,7 +191,7 @@ fn barycentrics<L: Math>(w: V3<L>, a: V3<L>, b: V3<L>, c: V3<L>, n: V3<L>) -> (V
     let nn = n.dot(n);
     let b1 = d.cross(c - a).dot(n) / nn;
     let b2 = (b - a).cross(d).dot(n) / nn;
-    (V3::new(L::c(1.0) - b1 - b2, b1, b2), t.gt(L::c(0.0)))
+    (V3::new(L::ONE - b1 - b2, b1, b2), t.gt(L::ZERO))
 }
 
 /// Arvo's map alone, with no area fallback and no validity checks: for measuring where spherical
@@ -235,16 +229,16 @@ pub fn spherical_triangle<P: Point2<Lane = L>, L: Math>(
     let w = V3::select(s.by_area, w_area, w_sph);
     let pdf = pdf_of(&s, w);
     let ok = s.valid & w.dot(w).is_finite();
-    let w = V3::select(ok, w, V3::new(L::c(0.0), L::c(0.0), L::c(1.0)));
-    (Point3::from_lanes(w), L::select(ok, pdf, L::c(0.0)))
+    let w = V3::select(ok, w, V3::new(L::ZERO, L::ZERO, L::ONE));
+    (Point3::from_lanes(w), L::select(ok, pdf, L::ZERO))
 }
 
 /// The pdf of direction `w` given a set-up triangle, without the inside test: 1/Ω when sampled
 /// spherically, the converted area pdf otherwise.
 #[inline(always)]
 fn pdf_of<L: Math>(s: &Setup<L>, w: V3<L>) -> L {
-    let sph = L::c(1.0) / s.omega;
-    let area = area_pdf_solid_angle(w, s.h, s.n, L::c(2.0));
+    let sph = L::ONE / s.omega;
+    let area = area_pdf_solid_angle(w, s.h, s.n, L::TWO);
     L::select(s.by_area, area, sph)
 }
 
@@ -256,7 +250,7 @@ pub fn spherical_triangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P, c:
     let (w, a, b, c) = (w.to_lanes(), a.to_lanes(), b.to_lanes(), c.to_lanes());
     let s = setup(a, b, c);
     let inside = inside_polygon(w, [a, b, c], [b - a, c - b, a - c], s.h);
-    L::select(s.valid & inside, pdf_of(&s, w), L::c(0.0))
+    L::select(s.valid & inside, pdf_of(&s, w), L::ZERO)
 }
 
 /// Inverse of [`spherical_triangle`]: the u that maps to unit direction `w`, clamped to [0, 1]².
@@ -274,9 +268,9 @@ pub fn spherical_triangle_inverse<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P
     let plane_bw = s.ub.cross(w);
     let plane_ac = s.ua.cross(s.uc);
     let c_hat = plane_bw.cross(plane_ac);
-    let c_hat = c_hat.scale(L::c(1.0) / c_hat.length());
+    let c_hat = c_hat.scale(L::ONE / c_hat.length());
     // The two planes meet in ±Ĉ: keep the one on the arc from A to C.
-    let c_hat = c_hat.scale(L::c(1.0).copysign(c_hat.dot(s.ua + s.uc)));
+    let c_hat = c_hat.scale(L::ONE.copysign(c_hat.dot(s.ua + s.uc)));
     let dw = w - s.ub;
     let dc = c_hat - s.ub;
     let u1 = dw.dot(dw) / dc.dot(dc);
@@ -287,16 +281,13 @@ pub fn spherical_triangle_inverse<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P
         s.ua,
         s.ub,
         c_hat,
-        L::c(1.0),
-        L::c(1.0),
-        L::c(1.0),
+        L::ONE,
+        L::ONE,
+        L::ONE,
     );
     let u0 = sub / s.omega;
     // w = B leaves Ĉ undefined; any u₀ with u₁ = 0 maps there.
-    let at_b = dw.dot(dw).eq(L::c(0.0));
-    let u_sph = V2::new(
-        L::select(at_b, L::c(0.0), u0),
-        L::select(at_b, L::c(0.0), u1),
-    );
+    let at_b = dw.dot(dw).eq(L::ZERO);
+    let u_sph = V2::new(L::select(at_b, L::ZERO, u0), L::select(at_b, L::ZERO, u1));
     Point2::from_lanes(clamp_u(V2::select(s.by_area, u_area, u_sph)).nan_where(w.any_nan()))
 }

@@ -10,25 +10,25 @@ use crate::warp::common::clamp01;
 #[inline(always)]
 pub fn tent<L: Math>(u: L) -> L {
     let u = clamp01(u);
-    let left = u.lt(L::c(0.5));
-    let v = L::select(left, u, L::c(1.0) - u);
-    let x = L::c(1.0) - (v * L::c(2.0)).sqrt();
+    let left = u.lt(L::HALF);
+    let v = L::select(left, u, L::ONE - u);
+    let x = L::ONE - (v * L::TWO).sqrt();
     L::select(left, -x, x).canon()
 }
 
 /// pdf of [`tent`]: 1 − |x| on [−1, 1], else 0 (also for NaN).
 #[inline(always)]
 pub fn tent_pdf<L: Math>(x: L) -> L {
-    let p = L::c(1.0) - x.abs();
-    L::select(p.gt(L::c(0.0)), p, L::c(0.0))
+    let p = L::ONE - x.abs();
+    L::select(p.gt(L::ZERO), p, L::ZERO)
 }
 
 /// Inverse of [`tent`]: u = (1 + x)²/2 for x < 0, else 1 − (1 − x)²/2. x is clamped to [−1, 1];
 /// NaN gives NaN.
 #[inline(always)]
 pub fn tent_inverse<L: Math>(x: L) -> L {
-    let x = x.clamp(L::c(-1.0), L::c(1.0));
-    let d = L::c(1.0) - x.abs();
-    let half_d2 = d * d * L::c(0.5);
-    L::select(x.lt(L::c(0.0)), half_d2, L::c(1.0) - half_d2).canon()
+    let x = x.clamp(L::c(-1.0), L::ONE);
+    let d = L::ONE - x.abs();
+    let half_d2 = d * d * L::HALF;
+    L::select(x.lt(L::ZERO), half_d2, L::ONE - half_d2).canon()
 }

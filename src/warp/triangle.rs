@@ -16,11 +16,11 @@ use crate::warp::common::clamp_u;
 pub fn uniform_triangle<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
     let u = clamp_u(u.to_lanes());
     let first = u.x.lt(u.y);
-    let half0 = u.x * L::c(0.5);
-    let half1 = u.y * L::c(0.5);
+    let half0 = u.x * L::HALF;
+    let half1 = u.y * L::HALF;
     let b0 = L::select(first, half0, u.x - half1);
     let b1 = L::select(first, u.y - half0, half1);
-    let b2 = L::c(1.0) - u.x.max(u.y);
+    let b2 = L::ONE - u.x.max(u.y);
     Point3::from_lanes(V3::new(b0, b1, b2).nan_where(u.any_nan()))
 }
 
@@ -32,8 +32,8 @@ pub fn uniform_triangle_inverse<P: Point3<Lane = L>, L: Math>(b: P) -> P::Vec2 {
     let first = b.x.gt(b.y);
     let sum = b.x + b.y;
     let u = V2::new(
-        L::select(first, sum, b.x * L::c(2.0)),
-        L::select(first, b.y * L::c(2.0), sum),
+        L::select(first, sum, b.x * L::TWO),
+        L::select(first, b.y * L::TWO, sum),
     );
     Point2::from_lanes(clamp_u(u).nan_where(b.any_nan()))
 }
@@ -44,6 +44,6 @@ pub fn uniform_triangle_inverse<P: Point3<Lane = L>, L: Math>(b: P) -> P::Vec2 {
 #[inline(always)]
 pub fn uniform_triangle_pdf<P: Point2<Lane = L>, L: Math>(b: P) -> L {
     let b = b.to_lanes();
-    let inside = b.x.ge(L::c(0.0)) & b.y.ge(L::c(0.0)) & (b.x + b.y).le(L::c(1.0));
-    L::select(inside, L::c(2.0), L::c(0.0))
+    let inside = b.x.ge(L::ZERO) & b.y.ge(L::ZERO) & (b.x + b.y).le(L::ONE);
+    L::select(inside, L::TWO, L::ZERO)
 }

@@ -2,12 +2,13 @@
 //!
 //! `cargo run --release --example report` prints, per warp, the scalar and x8 time per sample on
 //! in-cache points (medians of repeated runs, the two forms interleaved so that their ratio comes
-//! from one run), the speedup, the worst error against the f64 instance of the same generic code,
+//! from one run), the scalar time over the plain glam+std version's (`plain.rs`), the speedup, the worst error against the f64 instance of the same generic code,
 //! the worst pdf error, and the χ² p-value of 10⁶ samples. Then, per sequence generator, scalar
 //! and x8 ns per value, the L2-star discrepancy at N = 1024 and the RMSE slopes on the Gaussian
 //! and the disk indicator (see `sequences.rs`). `-- --quick` is a shorter run for CI;
 //! `-- --json PATH` also writes the numbers as JSON.
 
+mod plain;
 mod sequences;
 
 use std::fmt::Write as _;
@@ -33,6 +34,8 @@ struct Config {
 struct Row {
     name: String,
     scalar_ns: f64,
+    /// Our scalar loop's time over the plain glam+std version's, in the same run.
+    scalar_vs_plain: Option<f64>,
     x8_ns: f64,
     max_abs_err: f64,
     worst_u: Vec2,
@@ -70,49 +73,87 @@ fn error_points(quick: bool) -> Vec<Vec2> {
     v
 }
 
-/// Median ns per sample of the scalar and x8 loops over the same points, interleaved.
-fn time_pair(
+/// Median ns per point of two loops over the same points (in two layouts: single points, or
+/// packets of eight), interleaved run by run so that their ratio comes from one stretch of the
+/// machine's load.
+fn time_pair<A, B, OA: Default + Clone, OB: Default + Clone>(
     cfg: &Config,
-    pts: &[Vec2],
-    packets: &[Vec2x8],
-    s: &dyn Fn(&[Vec2], &mut [Vec3]),
-    p: &dyn Fn(&[Vec2x8], &mut [Vec3x8]),
+    a_in: &[A],
+    b_in: &[B],
+    fa: &dyn Fn(&[A], &mut [OA]),
+    fb: &dyn Fn(&[B], &mut [OB]),
 ) -> (f64, f64) {
-    let mut out = vec![Vec3::ZERO; pts.len()];
-    let mut out8 = vec![Vec3x8::splat(Vec3::ZERO); packets.len()];
+    let points = a_in.len();
+    let mut out_a = vec![OA::default(); a_in.len()];
+    let mut out_b = vec![OB::default(); b_in.len()];
     let runs = if cfg.quick { 9 } else { 41 };
     let target = if cfg.quick { 2e-4 } else { 2e-3 }; // seconds per run
     let mut reps = 1usize;
     loop {
         let t = Instant::now();
         for _ in 0..reps {
-            s(black_box(pts), &mut out);
+            fa(black_box(a_in), &mut out_a);
         }
         if t.elapsed().as_secs_f64() > target / 4.0 {
             break;
         }
         reps *= 2;
     }
-    let (mut ts, mut tp) = (Vec::with_capacity(runs), Vec::with_capacity(runs));
+    let (mut ta, mut tb) = (Vec::with_capacity(runs), Vec::with_capacity(runs));
     for _ in 0..runs {
         let t = Instant::now();
         for _ in 0..reps {
-            s(black_box(pts), &mut out);
+            fa(black_box(a_in), &mut out_a);
         }
-        ts.push(t.elapsed().as_secs_f64());
-        black_box(&out);
+        ta.push(t.elapsed().as_secs_f64());
+        black_box(&out_a);
         let t = Instant::now();
         for _ in 0..reps {
-            p(black_box(packets), &mut out8);
+            fb(black_box(b_in), &mut out_b);
         }
-        tp.push(t.elapsed().as_secs_f64());
-        black_box(&out8);
+        tb.push(t.elapsed().as_secs_f64());
+        black_box(&out_b);
     }
     let med = |v: &mut Vec<f64>| {
         v.sort_by(f64::total_cmp);
-        v[v.len() / 2] * 1e9 / (reps * pts.len()) as f64
+        v[v.len() / 2] * 1e9 / (reps * points) as f64
     };
-    (med(&mut ts), med(&mut tp))
+    (med(&mut ta), med(&mut tb))
+}
+
+/// A loop of a plain scalar warp over a batch (the yardstick of `scalar_vs_plain`).
+type PlainLoop = Box<dyn Fn(&[Vec2], &mut [Vec3])>;
+
+/// The plain glam+std version of a registered sampler's formula, with the same parameters, as a
+/// loop; None where there is none. The polygons' geometry passes through `black_box` as in the
+/// registry's loop, so both pay their set-up per sample.
+fn plain_loop(s: Sampler) -> Option<PlainLoop> {
+    fn each(f: impl Fn(Vec2) -> Vec3 + 'static) -> PlainLoop {
+        Box::new(move |us: &[Vec2], out: &mut [Vec3]| {
+            for (o, &u) in out.iter_mut().zip(us) {
+                *o = f(u);
+            }
+        })
+    }
+    Some(match s {
+        Sampler::ConcentricDisk => each(|u| plain::concentric_disk(u).extend(0.0)),
+        Sampler::PolarDisk => each(|u| plain::polar_disk(u).extend(0.0)),
+        Sampler::UniformHemisphere => each(plain::uniform_hemisphere),
+        Sampler::CosineHemisphere => each(plain::cosine_hemisphere),
+        Sampler::UniformSphere => each(plain::uniform_sphere),
+        Sampler::UniformCone { h } => each(move |u| plain::uniform_cone(u, h)),
+        Sampler::PhongLobe { n } => each(move |u| plain::phong_lobe(u, n)),
+        Sampler::UniformTriangle => each(plain::uniform_triangle),
+        Sampler::Tent => each(|u| Vec3::new(plain::tent(u.x), plain::tent(u.y), 0.0)),
+        Sampler::SphericalTriangle { v } => each(move |u| {
+            let [a, b, c] = black_box(v);
+            plain::spherical_triangle(u, a, b, c).0
+        }),
+        Sampler::SphericalRectangle { v } => each(move |u| {
+            let [c, ex, ey] = black_box(v);
+            plain::spherical_rectangle(u, c, ex, ey).0
+        }),
+    })
 }
 
 fn d2(u: DVec2) -> V2<f64> {
@@ -126,13 +167,19 @@ fn d3(v: Vec3) -> V3<f64> {
 /// parameters, as the tests), timed over the batch with the warp inlined into the loop, its
 /// error against its f64 instance, and its χ² p-value.
 fn measure(cfg: &Config, s: Sampler, pts: &[Vec2], packets: &[Vec2x8], err_pts: &[Vec2]) -> Row {
+    let ours = |us: &[Vec2], out: &mut [Vec3]| s.sample_all(us, out);
     let (scalar_ns, x8_ns) = time_pair(
         cfg,
         pts,
         packets,
-        &|us: &[Vec2], out: &mut [Vec3]| s.sample_all(us, out),
+        &ours,
         &|us: &[Vec2x8], out: &mut [Vec3x8]| s.sample_all(us, out),
     );
+    // The ratio to the plain version comes from its own interleaved pair.
+    let scalar_vs_plain = plain_loop(s).map(|plain| {
+        let (a, b) = time_pair(cfg, pts, pts, &ours, &*plain);
+        a / b
+    });
     let mut max_abs_err = 0.0f64;
     let mut worst_u = Vec2::ZERO;
     let mut max_pdf_rel_err = 0.0f64;
@@ -162,6 +209,7 @@ fn measure(cfg: &Config, s: Sampler, pts: &[Vec2], packets: &[Vec2x8], err_pts: 
     Row {
         name: s.name(),
         scalar_ns,
+        scalar_vs_plain,
         x8_ns,
         max_abs_err,
         worst_u,
@@ -325,16 +373,26 @@ fn main() {
     let err_pts = error_points(cfg.quick);
 
     println!(
-        "{:<28} {:>10} {:>10} {:>8} {:>12} {:>24} {:>12} {:>9}",
-        "warp", "scalar ns", "x8 ns", "speedup", "max abs err", "worst u", "pdf rel err", "χ² p"
+        "{:<28} {:>10} {:>9} {:>10} {:>8} {:>12} {:>24} {:>12} {:>9}",
+        "warp",
+        "scalar ns",
+        "vs plain",
+        "x8 ns",
+        "speedup",
+        "max abs err",
+        "worst u",
+        "pdf rel err",
+        "χ² p"
     );
     let mut rows = Vec::new();
     for s in registry::registry() {
         let r = measure(&cfg, s, &pts, &packets, &err_pts);
+        let vs_plain = r.scalar_vs_plain.map_or("-".into(), |v| format!("{v:.2}×"));
         println!(
-            "{:<28} {:>10.2} {:>10.2} {:>7.1}× {:>12.2e} {:>24} {:>12.2e} {:>9.4}",
+            "{:<28} {:>10.2} {:>9} {:>10.2} {:>7.1}× {:>12.2e} {:>24} {:>12.2e} {:>9.4}",
             r.name,
             r.scalar_ns,
+            vs_plain,
             r.x8_ns,
             r.scalar_ns / r.x8_ns,
             r.max_abs_err,
@@ -424,9 +482,10 @@ fn main() {
             }
             write!(
                 s,
-                "{{\"name\": \"{}\", \"scalar_ns\": {}, \"x8_ns\": {}, \"speedup\": {}, \"max_abs_err\": {}, \"max_pdf_rel_err\": {}, \"chi2_p\": {}}}",
+                "{{\"name\": \"{}\", \"scalar_ns\": {}, \"scalar_vs_plain\": {}, \"x8_ns\": {}, \"speedup\": {}, \"max_abs_err\": {}, \"max_pdf_rel_err\": {}, \"chi2_p\": {}}}",
                 esc(&r.name),
                 num(r.scalar_ns),
+                num(r.scalar_vs_plain.unwrap_or(f64::NAN)),
                 num(r.x8_ns),
                 num(r.scalar_ns / r.x8_ns),
                 num(r.max_abs_err),

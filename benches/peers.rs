@@ -1,0 +1,250 @@
+//! The crate's warps beside what a user would otherwise run, in the same criterion groups so that
+//! every ratio comes from one run:
+//!
+//! - per warp: our scalar and x8 forms, the plain glam+std version of the same formula and the
+//!   plain `wide::f32x8` version (`examples/report/plain.rs`), on 4096 in-cache points;
+//! - random points from an RNG: `Pcg32` with our scalar disk and sphere, `Pcg32x8` with the x8
+//!   forms, and rand_distr's `UnitDisc`, `UnitCircle` and `UnitSphere` (rejection and
+//!   Marsaglia's method) with the same `Pcg32`;
+//! - the copy kernel that moves the same bytes (2 floats in, 3 out).
+//!
+//! `cargo bench --bench peers`; for the AVX2 build,
+//! `RUSTFLAGS="-C target-feature=+avx2,+fma" cargo bench --target-dir target/avx2 --bench peers`.
+
+#[path = "../examples/report/plain.rs"]
+mod plain;
+
+use std::hint::black_box;
+
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use glam::{Vec2, Vec3};
+use mcsample::rng::Pcg32x8;
+use mcsample::verify::registry::{self, Sampler};
+use mcsample::x8::{Vec2x8, Vec3x8};
+use plain::{U8, V8};
+use rand_core::Rng;
+use rand_distr::{Distribution, UnitCircle, UnitDisc, UnitSphere};
+use rand_pcg::Pcg32;
+use wide::f32x8;
+
+const N: usize = 4096;
+
+fn points() -> (Vec<Vec2>, Vec<Vec2x8>, Vec<U8>) {
+    let pts: Vec<Vec2> = (0..N)
+        .map(|i| {
+            let i = i as f64;
+            Vec2::new(
+                (0.5 + i * 0.754_877_666_246_692_7).fract() as f32,
+                (0.5 + i * 0.569_840_290_998_053_2).fract() as f32,
+            )
+        })
+        .collect();
+    let packets: Vec<Vec2x8> = pts
+        .chunks_exact(8)
+        .map(|c| Vec2x8::from(<[Vec2; 8]>::try_from(c).unwrap()))
+        .collect();
+    let plain: Vec<U8> = packets
+        .iter()
+        .map(|p| U8 {
+            x: f32x8::new(p.x.to_array()),
+            y: f32x8::new(p.y.to_array()),
+        })
+        .collect();
+    (pts, packets, plain)
+}
+
+/// The plain packet version of a sampler, where one exists.
+fn plain_x8(s: Sampler) -> Option<fn(U8, f32) -> V8> {
+    Some(match s {
+        Sampler::ConcentricDisk => |u, _| plain::concentric_disk_x8(u),
+        Sampler::PolarDisk => |u, _| plain::polar_disk_x8(u),
+        Sampler::UniformHemisphere => |u, _| plain::uniform_hemisphere_x8(u),
+        Sampler::CosineHemisphere => |u, _| plain::cosine_hemisphere_x8(u),
+        Sampler::UniformSphere => |u, _| plain::uniform_sphere_x8(u),
+        Sampler::UniformCone { .. } => |u, h| plain::uniform_cone_x8(u, f32x8::splat(h)),
+        _ => return None,
+    })
+}
+
+/// The plain scalar version of a sampler with its parameter, where one exists.
+fn plain_scalar(s: Sampler) -> Option<Box<dyn Fn(Vec2) -> Vec3>> {
+    Some(match s {
+        Sampler::ConcentricDisk => Box::new(|u| plain::concentric_disk(u).extend(0.0)),
+        Sampler::PolarDisk => Box::new(|u| plain::polar_disk(u).extend(0.0)),
+        Sampler::UniformHemisphere => Box::new(plain::uniform_hemisphere),
+        Sampler::CosineHemisphere => Box::new(plain::cosine_hemisphere),
+        Sampler::UniformSphere => Box::new(plain::uniform_sphere),
+        Sampler::UniformCone { h } => Box::new(move |u| plain::uniform_cone(u, h)),
+        Sampler::PhongLobe { n } => Box::new(move |u| plain::phong_lobe(u, n)),
+        Sampler::UniformTriangle => Box::new(plain::uniform_triangle),
+        Sampler::Tent => Box::new(|u| Vec3::new(plain::tent(u.x), plain::tent(u.y), 0.0)),
+        Sampler::SphericalTriangle { v } => Box::new(move |u| {
+            let [a, b, c] = black_box(v);
+            plain::spherical_triangle(u, a, b, c).0
+        }),
+        Sampler::SphericalRectangle { v } => Box::new(move |u| {
+            let [c, ex, ey] = black_box(v);
+            plain::spherical_rectangle(u, c, ex, ey).0
+        }),
+    })
+}
+
+fn warps(c: &mut Criterion) {
+    let (pts, packets, plain_packets) = points();
+    let mut out = vec![Vec3::ZERO; N];
+    let mut out8 = vec![Vec3x8::splat(Vec3::ZERO); N / 8];
+    let mut outp = vec![
+        V8 {
+            x: f32x8::ZERO,
+            y: f32x8::ZERO,
+            z: f32x8::ZERO
+        };
+        N / 8
+    ];
+    for s in registry::registry() {
+        let mut g = c.benchmark_group(format!("peers/{}", s.name()));
+        g.throughput(Throughput::Elements(N as u64));
+        g.bench_function("ours scalar", |b| {
+            b.iter(|| {
+                s.sample_all(black_box(&pts), &mut out);
+                black_box(&out);
+            })
+        });
+        g.bench_function("ours x8", |b| {
+            b.iter(|| {
+                s.sample_all(black_box(&packets), &mut out8);
+                black_box(&out8);
+            })
+        });
+        // The plain forms are called through a Box here; the report times them inlined.
+        if let Some(f) = plain_scalar(s) {
+            g.bench_function("plain glam", |b| {
+                b.iter(|| {
+                    for (o, &u) in out.iter_mut().zip(black_box(&pts)) {
+                        *o = f(u);
+                    }
+                    black_box(&out);
+                })
+            });
+        }
+        if let Some(f) = plain_x8(s) {
+            let h = match s {
+                Sampler::UniformCone { h } => h,
+                _ => 0.0,
+            };
+            g.bench_function("plain wide", |b| {
+                b.iter(|| {
+                    for (o, &u) in outp.iter_mut().zip(black_box(&plain_packets)) {
+                        *o = f(u, h);
+                    }
+                    black_box(&outp);
+                })
+            });
+        }
+        g.bench_function("copy", |b| {
+            b.iter(|| {
+                for (o, u) in out.iter_mut().zip(black_box(&pts)) {
+                    *o = Vec3::new(u.x, u.y, u.x);
+                }
+                black_box(&out);
+            })
+        });
+        g.finish();
+    }
+}
+
+/// Points from an RNG: the crate's warps fed by PCG32 against rand_distr's samplers.
+fn random_points(c: &mut Criterion) {
+    let mut out = vec![[0.0f32; 3]; N];
+    let mut g = c.benchmark_group("peers/random points");
+    g.throughput(Throughput::Elements(N as u64));
+    let to_u = |x: u32| (x >> 8) as f32 * (1.0 / 16_777_216.0);
+    g.bench_function(BenchmarkId::new("disk", "Pcg32 + concentric_disk"), |b| {
+        let mut rng = Pcg32::new(7, 11);
+        b.iter(|| {
+            for o in out.iter_mut() {
+                let u = Vec2::new(to_u(rng.next_u32()), to_u(rng.next_u32()));
+                let p = mcsample::warp::concentric_disk(u);
+                *o = [p.x, p.y, 0.0];
+            }
+            black_box(&out);
+        })
+    });
+    g.bench_function(BenchmarkId::new("disk", "rand_distr UnitDisc"), |b| {
+        let mut rng = Pcg32::new(7, 11);
+        b.iter(|| {
+            for o in out.iter_mut() {
+                let [x, y]: [f32; 2] = UnitDisc.sample(&mut rng);
+                *o = [x, y, 0.0];
+            }
+            black_box(&out);
+        })
+    });
+    g.bench_function(
+        BenchmarkId::new("circle", "Pcg32 + polar_disk at r = 1"),
+        |b| {
+            let mut rng = Pcg32::new(7, 11);
+            b.iter(|| {
+                for o in out.iter_mut() {
+                    let u = Vec2::new(1.0, to_u(rng.next_u32()));
+                    let p = mcsample::warp::polar_disk(u);
+                    *o = [p.x, p.y, 0.0];
+                }
+                black_box(&out);
+            })
+        },
+    );
+    g.bench_function(BenchmarkId::new("circle", "rand_distr UnitCircle"), |b| {
+        let mut rng = Pcg32::new(7, 11);
+        b.iter(|| {
+            for o in out.iter_mut() {
+                let [x, y]: [f32; 2] = UnitCircle.sample(&mut rng);
+                *o = [x, y, 0.0];
+            }
+            black_box(&out);
+        })
+    });
+    g.bench_function(BenchmarkId::new("sphere", "Pcg32 + uniform_sphere"), |b| {
+        let mut rng = Pcg32::new(7, 11);
+        b.iter(|| {
+            for o in out.iter_mut() {
+                let u = Vec2::new(to_u(rng.next_u32()), to_u(rng.next_u32()));
+                *o = mcsample::warp::uniform_sphere(u).to_array();
+            }
+            black_box(&out);
+        })
+    });
+    g.bench_function(
+        BenchmarkId::new("sphere", "Pcg32x8 + x8 uniform_sphere"),
+        |b| {
+            let mut rng =
+                Pcg32x8::from_lanes(core::array::from_fn(|i| Pcg32::new(7, 11 + i as u64)));
+            b.iter(|| {
+                for o in out.chunks_exact_mut(8) {
+                    let x = rng.next_f32x8();
+                    let u = Vec2x8::new(x, rng.next_f32x8());
+                    for (d, w) in o
+                        .iter_mut()
+                        .zip(mcsample::warp::x8::uniform_sphere(u).to_array())
+                    {
+                        *d = w.to_array();
+                    }
+                }
+                black_box(&out);
+            })
+        },
+    );
+    g.bench_function(BenchmarkId::new("sphere", "rand_distr UnitSphere"), |b| {
+        let mut rng = Pcg32::new(7, 11);
+        b.iter(|| {
+            for o in out.iter_mut() {
+                *o = UnitSphere.sample(&mut rng);
+            }
+            black_box(&out);
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(benches, warps, random_points);
+criterion_main!(benches);

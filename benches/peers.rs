@@ -6,6 +6,7 @@
 //! - random points from an RNG: `Pcg32` with our scalar disk and sphere, `Pcg32x8` with the x8
 //!   forms, and rand_distr's `UnitDisc`, `UnitCircle` and `UnitSphere` (rejection and
 //!   Marsaglia's method) with the same `Pcg32`;
+//! - with `--features rand`, the same through `mcsample::distr` (`rng.sample(UnitDisk)`);
 //! - the copy kernel that moves the same bytes (2 floats in, 3 out).
 //!
 //! `cargo bench --bench peers`; for the AVX2 build,
@@ -170,6 +171,21 @@ fn random_points(c: &mut Criterion) {
             black_box(&out);
         })
     });
+    #[cfg(feature = "rand")]
+    g.bench_function(
+        BenchmarkId::new("disk", "Pcg32 sample(mcsample::distr::UnitDisk)"),
+        |b| {
+            use rand::RngExt;
+            let mut rng = Pcg32::new(7, 11);
+            b.iter(|| {
+                for o in out.iter_mut() {
+                    let p: Vec2 = rng.sample(mcsample::distr::UnitDisk);
+                    *o = [p.x, p.y, 0.0];
+                }
+                black_box(&out);
+            })
+        },
+    );
     g.bench_function(BenchmarkId::new("disk", "rand_distr UnitDisc"), |b| {
         let mut rng = Pcg32::new(7, 11);
         b.iter(|| {
@@ -229,6 +245,21 @@ fn random_points(c: &mut Criterion) {
                     {
                         *d = w.to_array();
                     }
+                }
+                black_box(&out);
+            })
+        },
+    );
+    #[cfg(feature = "rand")]
+    g.bench_function(
+        BenchmarkId::new("sphere", "Pcg32 sample(mcsample::distr::UniformSphere)"),
+        |b| {
+            use rand::RngExt;
+            let mut rng = Pcg32::new(7, 11);
+            b.iter(|| {
+                for o in out.iter_mut() {
+                    let w: Vec3 = rng.sample(mcsample::distr::UniformSphere);
+                    *o = w.to_array();
                 }
                 black_box(&out);
             })

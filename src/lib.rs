@@ -2,7 +2,8 @@
 //! form on glam types and an 8-wide packet form on `wide`, written once.
 //!
 //! `no_std`, allocation-free and free of `unsafe`; the `std` feature (on by default) adds only
-//! [`verify`], the distribution-test layer.
+//! [`verify`], the distribution-test layer, and the `rand` feature (off by default, no_std) adds
+//! `distr`, rand's `Distribution` for the warps.
 //!
 //! # Map
 //!
@@ -20,6 +21,7 @@
 //! | 3 | [`frame`] | orthonormal frames from a normal | lane, math, point |
 //! | 3 | [`warp`] | square → disk, hemisphere, sphere, cone, Phong lobe, triangle, spherical triangle and rectangle, tent | lane, math, point |
 //! | 4 | [`camera`] | film, lens and time samples of a pixel | seq, warp |
+//! | 4 | `distr` (feature `rand`) | rand's `Distribution` for the warps | warp |
 //! | 4 | `estimate`, `mis` (to come) | accumulators, roulette, splitting; MIS weights | lane only |
 //! | 4 | `reference` (to come) | analytic f64 irradiance references | core and libm only |
 //! | 5 | `scene` (to come) | lights and BSDFs | warp, frame |
@@ -65,6 +67,8 @@
 extern crate std;
 
 pub mod camera;
+#[cfg(feature = "rand")]
+pub mod distr;
 pub mod frame;
 pub mod lane;
 pub mod math;

@@ -67,29 +67,6 @@ fn plain_x8(s: Sampler) -> Option<fn(U8, f32) -> V8> {
     })
 }
 
-/// The plain scalar version of a sampler with its parameter, where one exists.
-fn plain_scalar(s: Sampler) -> Option<Box<dyn Fn(Vec2) -> Vec3>> {
-    Some(match s {
-        Sampler::ConcentricDisk => Box::new(|u| plain::concentric_disk(u).extend(0.0)),
-        Sampler::PolarDisk => Box::new(|u| plain::polar_disk(u).extend(0.0)),
-        Sampler::UniformHemisphere => Box::new(plain::uniform_hemisphere),
-        Sampler::CosineHemisphere => Box::new(plain::cosine_hemisphere),
-        Sampler::UniformSphere => Box::new(plain::uniform_sphere),
-        Sampler::UniformCone { h } => Box::new(move |u| plain::uniform_cone(u, h)),
-        Sampler::PhongLobe { n } => Box::new(move |u| plain::phong_lobe(u, n)),
-        Sampler::UniformTriangle => Box::new(plain::uniform_triangle),
-        Sampler::Tent => Box::new(|u| Vec3::new(plain::tent(u.x), plain::tent(u.y), 0.0)),
-        Sampler::SphericalTriangle { v } => Box::new(move |u| {
-            let [a, b, c] = black_box(v);
-            plain::spherical_triangle(u, a, b, c).0
-        }),
-        Sampler::SphericalRectangle { v } => Box::new(move |u| {
-            let [c, ex, ey] = black_box(v);
-            plain::spherical_rectangle(u, c, ex, ey).0
-        }),
-    })
-}
-
 fn warps(c: &mut Criterion) {
     let (pts, packets, plain_packets) = points();
     let mut out = vec![Vec3::ZERO; N];
@@ -117,13 +94,10 @@ fn warps(c: &mut Criterion) {
                 black_box(&out8);
             })
         });
-        // The plain forms are called through a Box here; the report times them inlined.
-        if let Some(f) = plain_scalar(s) {
+        if let Some(f) = plain::loop_for(s) {
             g.bench_function("plain glam", |b| {
                 b.iter(|| {
-                    for (o, &u) in out.iter_mut().zip(black_box(&pts)) {
-                        *o = f(u);
-                    }
+                    f(black_box(&pts), &mut out);
                     black_box(&out);
                 })
             });

@@ -121,41 +121,6 @@ fn time_pair<A, B, OA: Default + Clone, OB: Default + Clone>(
     (med(&mut ta), med(&mut tb))
 }
 
-/// A loop of a plain scalar warp over a batch (the yardstick of `scalar_vs_plain`).
-type PlainLoop = Box<dyn Fn(&[Vec2], &mut [Vec3])>;
-
-/// The plain glam+std version of a registered sampler's formula, with the same parameters, as a
-/// loop; None where there is none. The polygons' geometry passes through `black_box` as in the
-/// registry's loop, so both pay their set-up per sample.
-fn plain_loop(s: Sampler) -> Option<PlainLoop> {
-    fn each(f: impl Fn(Vec2) -> Vec3 + 'static) -> PlainLoop {
-        Box::new(move |us: &[Vec2], out: &mut [Vec3]| {
-            for (o, &u) in out.iter_mut().zip(us) {
-                *o = f(u);
-            }
-        })
-    }
-    Some(match s {
-        Sampler::ConcentricDisk => each(|u| plain::concentric_disk(u).extend(0.0)),
-        Sampler::PolarDisk => each(|u| plain::polar_disk(u).extend(0.0)),
-        Sampler::UniformHemisphere => each(plain::uniform_hemisphere),
-        Sampler::CosineHemisphere => each(plain::cosine_hemisphere),
-        Sampler::UniformSphere => each(plain::uniform_sphere),
-        Sampler::UniformCone { h } => each(move |u| plain::uniform_cone(u, h)),
-        Sampler::PhongLobe { n } => each(move |u| plain::phong_lobe(u, n)),
-        Sampler::UniformTriangle => each(plain::uniform_triangle),
-        Sampler::Tent => each(|u| Vec3::new(plain::tent(u.x), plain::tent(u.y), 0.0)),
-        Sampler::SphericalTriangle { v } => each(move |u| {
-            let [a, b, c] = black_box(v);
-            plain::spherical_triangle(u, a, b, c).0
-        }),
-        Sampler::SphericalRectangle { v } => each(move |u| {
-            let [c, ex, ey] = black_box(v);
-            plain::spherical_rectangle(u, c, ex, ey).0
-        }),
-    })
-}
-
 fn d2(u: DVec2) -> V2<f64> {
     u.into()
 }
@@ -176,7 +141,7 @@ fn measure(cfg: &Config, s: Sampler, pts: &[Vec2], packets: &[Vec2x8], err_pts: 
         &|us: &[Vec2x8], out: &mut [Vec3x8]| s.sample_all(us, out),
     );
     // The ratio to the plain version comes from its own interleaved pair.
-    let scalar_vs_plain = plain_loop(s).map(|plain| {
+    let scalar_vs_plain = plain::loop_for(s).map(|plain| {
         let (a, b) = time_pair(cfg, pts, pts, &ours, &*plain);
         a / b
     });

@@ -9,7 +9,10 @@
 
 use std::f32::consts::{FRAC_PI_4, PI, TAU};
 
+use std::hint::black_box;
+
 use glam::{Vec2, Vec3};
+use mcsample::verify::registry::Sampler;
 use wide::f32x8;
 
 /// Shirley–Chiu concentric map, as in pbrt.
@@ -171,6 +174,42 @@ pub fn spherical_rectangle(u: Vec2, corner: Vec3, ex: Vec3, ey: Vec3) -> (Vec3, 
         y1
     };
     (corner + (xu - x0) * x + (yv - y0) * y, 1.0 / s)
+}
+
+/// A loop of a plain scalar warp over a batch (the yardstick of `scalar_vs_plain`), the warp
+/// inlined into it; only the batch is called through the box.
+pub type PlainLoop = Box<dyn Fn(&[Vec2], &mut [Vec3])>;
+
+/// The plain glam+std version of a registered sampler's formula, with the same parameters, as a
+/// loop; None where there is none. The polygons' geometry passes through `black_box` as in the
+/// registry's loop, so both pay their set-up per sample.
+pub fn loop_for(s: Sampler) -> Option<PlainLoop> {
+    fn each(f: impl Fn(Vec2) -> Vec3 + 'static) -> PlainLoop {
+        Box::new(move |us: &[Vec2], out: &mut [Vec3]| {
+            for (o, &u) in out.iter_mut().zip(us) {
+                *o = f(u);
+            }
+        })
+    }
+    Some(match s {
+        Sampler::ConcentricDisk => each(|u| concentric_disk(u).extend(0.0)),
+        Sampler::PolarDisk => each(|u| polar_disk(u).extend(0.0)),
+        Sampler::UniformHemisphere => each(uniform_hemisphere),
+        Sampler::CosineHemisphere => each(cosine_hemisphere),
+        Sampler::UniformSphere => each(uniform_sphere),
+        Sampler::UniformCone { h } => each(move |u| uniform_cone(u, h)),
+        Sampler::PhongLobe { n } => each(move |u| phong_lobe(u, n)),
+        Sampler::UniformTriangle => each(uniform_triangle),
+        Sampler::Tent => each(|u| Vec3::new(tent(u.x), tent(u.y), 0.0)),
+        Sampler::SphericalTriangle { v } => each(move |u| {
+            let [a, b, c] = black_box(v);
+            spherical_triangle(u, a, b, c).0
+        }),
+        Sampler::SphericalRectangle { v } => each(move |u| {
+            let [c, ex, ey] = black_box(v);
+            spherical_rectangle(u, c, ex, ey).0
+        }),
+    })
 }
 
 // ---------------------------------------------------------------------------------------------

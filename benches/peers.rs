@@ -12,6 +12,7 @@
 //! `cargo bench --bench peers`; for the AVX2 build,
 //! `RUSTFLAGS="-C target-feature=+avx2,+fma" cargo bench --target-dir target/avx2 --bench peers`.
 
+mod common;
 #[path = "../examples/report/plain.rs"]
 mod plain;
 
@@ -31,19 +32,7 @@ use wide::f32x8;
 const N: usize = 4096;
 
 fn points() -> (Vec<Vec2>, Vec<Vec2x8>, Vec<U8>) {
-    let pts: Vec<Vec2> = (0..N)
-        .map(|i| {
-            let i = i as f64;
-            Vec2::new(
-                (0.5 + i * 0.754_877_666_246_692_7).fract() as f32,
-                (0.5 + i * 0.569_840_290_998_053_2).fract() as f32,
-            )
-        })
-        .collect();
-    let packets: Vec<Vec2x8> = pts
-        .chunks_exact(8)
-        .map(|c| Vec2x8::from(<[Vec2; 8]>::try_from(c).unwrap()))
-        .collect();
+    let (pts, packets) = common::r2_points(N);
     let plain: Vec<U8> = packets
         .iter()
         .map(|p| U8 {

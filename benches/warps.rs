@@ -5,37 +5,21 @@
 //! `cargo bench --bench warps`; for the AVX2 build,
 //! `RUSTFLAGS="-C target-feature=+avx2,+fma" cargo bench --bench warps`.
 
+mod common;
+
 use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 use mcsample::verify::registry;
-use mcsample::x8::{Vec2x8, Vec3x8};
+use mcsample::x8::Vec3x8;
 
 const SMALL: usize = 4096;
 const LARGE: usize = 1 << 24;
 
-fn inputs(n: usize) -> (Vec<Vec2>, Vec<Vec2x8>) {
-    // A fixed low-discrepancy-ish pattern (R2 sequence): deterministic, no RNG dependency.
-    let pts: Vec<Vec2> = (0..n)
-        .map(|i| {
-            let i = i as f64;
-            Vec2::new(
-                (0.5 + i * 0.754_877_666_246_692_7).fract() as f32,
-                (0.5 + i * 0.569_840_290_998_053_2).fract() as f32,
-            )
-        })
-        .collect();
-    let packets = pts
-        .chunks_exact(8)
-        .map(|c| Vec2x8::from(<[Vec2; 8]>::try_from(c).unwrap()))
-        .collect();
-    (pts, packets)
-}
-
 fn bench_size(c: &mut Criterion, n: usize, label: &str) {
-    let (pts, packets) = inputs(n);
+    let (pts, packets) = common::r2_points(n);
     let mut out = vec![Vec3::ZERO; n];
     let mut out8 = vec![Vec3x8::splat(Vec3::ZERO); n / 8];
     let mut g = c.benchmark_group(format!("warps_{label}"));

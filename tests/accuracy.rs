@@ -493,18 +493,8 @@ fn frame_is_orthonormal_and_matches_duff() {
     let mut mw = Max::new("Frame to_world(to_local(v)) − v");
     for &n in &normals {
         let f = Frame::from_normal(n);
-        let (t, b, nn) = (dv3(f.t), dv3(f.b), dv3(f.n));
-        let handed = dist3(cross(t, b), nn);
-        let e = [
-            (norm(t) - 1.0).abs(),
-            (norm(b) - 1.0).abs(),
-            dot(t, b).abs(),
-            dot(t, nn).abs(),
-            dot(b, nn).abs(),
-            handed,
-        ]
-        .into_iter()
-        .fold(0.0, f64::max);
+        let (t, b) = (dv3(f.t), dv3(f.b));
+        let e = orthonormal_error(t, b, dv3(f.n));
         mo.add(e, || format!("n={n:?} t={:?} b={:?}", f.t, f.b));
         let (rt, rb) = duff_frame(dv3(n));
         let e = dist3(t, rt).max(dist3(b, rb));

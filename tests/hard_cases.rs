@@ -1106,17 +1106,7 @@ hard_case!(
             let s = (1.0 - z as f64 * z as f64).sqrt() as f32;
             let n = Vec3::new(s * phi.cos(), s * phi.sin(), z);
             let f = Frame::from_normal(n);
-            let (t, b, nn) = (dv3(f.t), dv3(f.b), dv3(n));
-            let e = [
-                (norm(t) - 1.0).abs(),
-                (norm(b) - 1.0).abs(),
-                dot(t, b).abs(),
-                dot(t, nn).abs(),
-                dot(b, nn).abs(),
-                dist3(cross(t, b), nn),
-            ]
-            .into_iter()
-            .fold(0.0, f64::max);
+            let e = orthonormal_error(dv3(f.t), dv3(f.b), dv3(n));
             r.push(check(e <= 1e-6, || format!("n={n:?}: error {e:e}")));
         }
         for n in [Vec3::NEG_Z, Vec3::Z] {

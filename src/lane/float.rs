@@ -153,9 +153,14 @@ fn sqrt_f32(x: f32) -> f32 {
     }
 }
 
-/// The compares and select of a scalar lane, whose mask is `bool`: the same for `f32` and `f64`.
-macro_rules! scalar_compares {
+/// What the two scalar lanes share: their constants, and the compares and select of a lane whose
+/// mask is `bool`. The same text for `f32` and `f64`.
+macro_rules! scalar_lane {
     () => {
+        const ZERO: Self = 0.0;
+        const ONE: Self = 1.0;
+        const TWO: Self = 2.0;
+        const HALF: Self = 0.5;
         inline_fns! {
             fn lt(self, o: Self) -> bool { self < o }
             fn le(self, o: Self) -> bool { self <= o }
@@ -169,10 +174,6 @@ macro_rules! scalar_compares {
 
 impl Lane for f32 {
     type Mask = bool;
-    const ZERO: Self = 0.0;
-    const ONE: Self = 1.0;
-    const TWO: Self = 2.0;
-    const HALF: Self = 0.5;
 
     inline_fns! {
         fn c(x: f64) -> Self { x as f32 }
@@ -183,7 +184,7 @@ impl Lane for f32 {
             f32::from_bits((self.to_bits() & 0x7fff_ffff) | (sign.to_bits() & 0x8000_0000))
         }
     }
-    scalar_compares!();
+    scalar_lane!();
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -224,10 +225,6 @@ impl Lane for F32x8 {
 
 impl Lane for f64 {
     type Mask = bool;
-    const ZERO: Self = 0.0;
-    const ONE: Self = 1.0;
-    const TWO: Self = 2.0;
-    const HALF: Self = 0.5;
 
     #[inline(always)]
     fn c(x: f64) -> Self {
@@ -243,5 +240,5 @@ impl Lane for f64 {
         fn abs(self) -> Self { libm::fabs(self) }
         fn copysign(self, sign: Self) -> Self { libm::copysign(self, sign) }
     }
-    scalar_compares!();
+    scalar_lane!();
 }

@@ -53,6 +53,20 @@ pub fn normalize(a: D3) -> D3 {
 pub fn dist3(a: D3, b: D3) -> f64 {
     norm(sub(a, b))
 }
+/// How far (t, b, n) is from a right-handed orthonormal frame: the largest of the unit-length
+/// errors of t and b, their pairwise dot products with each other and n, and |t × b − n|.
+pub fn orthonormal_error(t: D3, b: D3, n: D3) -> f64 {
+    [
+        (norm(t) - 1.0).abs(),
+        (norm(b) - 1.0).abs(),
+        dot(t, b).abs(),
+        dot(t, n).abs(),
+        dot(b, n).abs(),
+        dist3(cross(t, b), n),
+    ]
+    .into_iter()
+    .fold(0.0, f64::max)
+}
 pub fn dist2(a: D2, b: D2) -> f64 {
     ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2)).sqrt()
 }

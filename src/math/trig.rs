@@ -138,18 +138,16 @@ pub fn sincos_2pi<L: Lane32>(u: L) -> (L, L) {
     // Quarter turns: r = (q + f)/4 with q = round(4r) ∈ {−2, …, 2} and f ∈ [−½, ½], both exact.
     let r4 = r * L::c(4.0);
     let q = round_small(r4);
-    // The angle is (π/2)(q + f). Rotating by q quarter turns maps (sin, cos) of (π/2)f to:
-    //   q = 0: ( s,  c)   q = 1: ( c, −s)   q = ±2: (−s, −c)   q = −1: (−c,  s).
-    // −s is the kernel at −f, so negate f for q ∈ {1, ±2}; q − 4r (not −(4r − q)) keeps f = 0 at
-    // +0, so that exact quarter turns give +0, never −0.
-    let neg = q.gt(L::HALF) | q.lt(L::c(-1.5));
-    let f = L::select(neg, q - r4, r4 - q);
-    let (s, c) = kernel_eighths(f, A1_HI_V, SIN_V, COS_V);
+    let (s, c) = kernel_eighths(r4 - q, A1_HI_V, SIN_V, COS_V);
+    // Rotate (s, c) by q quarter turns with cos(qπ/2) = 1 − |q| and sin(qπ/2) = q(2 − |q|),
+    // written 2q − q|q| so that q = −2 gives +0, not −0. One of the two is 0 and the other ±1,
+    // so every product and sum below is exact: this is the quadrant swap without selects, which
+    // the scalar form would otherwise compile to a branch taken half the time. At exact quarter
+    // turns f = +0, s = +0, and the sums give +0, never −0.
     let aq = q.abs();
-    let swap = aq.eq(L::ONE);
-    let c_for_sin = L::select(q.lt(L::ZERO), -c, c);
-    let c_for_cos = L::select(aq.gt(L::c(1.5)), -c, c);
-    (L::select(swap, c_for_sin, s), L::select(swap, s, c_for_cos))
+    let cq = L::ONE - aq;
+    let sq = (q + q) - q * aq;
+    (s * cq + c * sq, c * cq - s * sq)
 }
 
 /// sin(πt/4) and cos(πt/4) for t ∈ [−1, 1], with no range reduction.

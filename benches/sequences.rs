@@ -66,6 +66,18 @@ fn rng(c: &mut Criterion) {
         })
     });
 
+    // One generator, as most code holds it: each value waits for the previous step's multiply.
+    let mut single = Pcg32::new(STATES[0], STREAMS[0]);
+    g.bench_function("scalar_1x/next_u32", |b| {
+        b.iter(|| {
+            let mut acc = 0u32;
+            for _ in 0..N {
+                acc ^= single.next_u32();
+            }
+            black_box(acc)
+        })
+    });
+
     let mut scalars: [Pcg32; 8] = core::array::from_fn(|i| Pcg32::new(STATES[i], STREAMS[i]));
     g.bench_function("scalar_8x/next_u32", |b| {
         b.iter(|| {

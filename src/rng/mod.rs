@@ -17,16 +17,17 @@
 //! out = xsh.rotate_right(rot)
 //! ```
 //!
-//! The packet keeps each 64-bit state as two [`U32x8`] halves (high and low words), so the step
-//! needs only 32-bit lane operations: one widening 32×32→64 multiply of the low words by the low
-//! word of the multiplier, two wrapping 32-bit multiplies for the cross terms, and an add with a
-//! carry from the low to the high word. This is exact modulo 2⁶⁴ on every target.
+//! The packet's layout is chosen at compile time, since the instructions that make it fast differ:
+//! - with AVX2, or off x86-64 (NEON, wasm), each 64-bit state is two [`U32x8`] halves, stepped
+//!   with 32-bit lane operations: one widening multiply of the low words, two wrapping multiplies
+//!   for the cross terms, and an add with carry (`lanes32.rs`);
+//! - on x86-64 without AVX2 (SSE2 only), which has neither a 32-bit lane multiply nor a per-lane
+//!   shift, the states are four pairs of 64-bit lanes, stepped with `pmuludq`, the 32×32→64
+//!   multiply of SSE2, and rotated by a 64-bit shift of the output doubled into both halves
+//!   (`sse2.rs`).
 //!
-//! Speed depends on the target: with AVX2 these are all vector instructions and a packet is about
-//! as fast per value as eight scalar generators, while on baseline x86-64 (SSE2 only) `wide`
-//! implements 32-bit lane multiplies and per-lane shifts one lane at a time, and the packet is
-//! slower per value than scalar code (see `benches/sequences.rs`). Its use there is convenience:
-//! the samples arrive already in [`F32x8`] form for the packet warps.
+//! Both are exact modulo 2⁶⁴ and give the same values. See `benches/sequences.rs` and
+//! BENCHMARKS.md for their speed against scalar `rand_pcg` generators.
 //!
 //! # Equivalence with `rand_pcg`
 //!
@@ -47,10 +48,15 @@ use wide::{bytemuck, i32x8};
 
 use crate::lane::{F32x8, U32x8};
 
+#[cfg(not(all(target_arch = "x86_64", not(target_feature = "avx2"))))]
+#[path = "lanes32.rs"]
+mod layout;
+#[cfg(all(target_arch = "x86_64", not(target_feature = "avx2")))]
+#[path = "sse2.rs"]
+mod layout;
+
 /// The PCG multiplier for 64-bit state (the same constant as `rand_pcg`).
 const MULTIPLIER: u64 = 6_364_136_223_846_793_005;
-const MUL_LO: u32 = MULTIPLIER as u32;
-const MUL_HI: u32 = (MULTIPLIER >> 32) as u32;
 
 /// Eight independent PCG32 (XSH RR 64/32) generators, one per lane, stepped together.
 ///
@@ -69,16 +75,25 @@ const MUL_HI: u32 = (MULTIPLIER >> 32) as u32;
 /// assert_eq!(u[2], (scalar.next_u32() >> 8) as f32 / (1u32 << 24) as f32);
 /// assert!(u.iter().all(|&x| (0.0..1.0).contains(&x)));
 /// ```
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy)]
 pub struct Pcg32x8 {
-    /// Low 32 bits of each lane's state.
-    lo: U32x8,
-    /// High 32 bits of each lane's state.
-    hi: U32x8,
-    /// Low 32 bits of each lane's (odd) increment.
-    inc_lo: U32x8,
-    /// High 32 bits of each lane's increment.
-    inc_hi: U32x8,
+    /// Each lane's state, in the target's layout.
+    state: layout::Words,
+    /// Each lane's (odd) increment, in the same layout.
+    inc: layout::Words,
+}
+
+impl PartialEq for Pcg32x8 {
+    fn eq(&self, other: &Self) -> bool {
+        self.raw() == other.raw()
+    }
+}
+
+impl core::fmt::Debug for Pcg32x8 {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let (states, incs) = self.raw();
+        f.debug_struct("Pcg32x8").field("states", &states).field("increments", &incs).finish()
+    }
 }
 
 impl Pcg32x8 {
@@ -118,25 +133,7 @@ impl Pcg32x8 {
     /// The next 32-bit output of every lane, then one step of every lane.
     #[inline]
     pub fn next_u32x8(&mut self) -> U32x8 {
-        let (lo, hi) = (self.lo, self.hi);
-
-        // Output XSH RR of the old state: x = s ^ (s >> 18); xsh = (x >> 27) as u32; rot = s >> 59.
-        let x_lo = lo ^ ((lo >> 18) | (hi << 14));
-        let x_hi = hi ^ (hi >> 18);
-        let xsh = (x_lo >> 27) | (x_hi << 5);
-        let rot = hi >> 27;
-        let left = (U32x8::ZERO - rot) & U32x8::splat(31);
-        let out = (xsh >> rot) | (xsh << left);
-
-        // Step: s·M + inc mod 2⁶⁴, with 32-bit halves.
-        let (p_lo, p_hi) = lo.mul_keep_low_high(U32x8::splat(MUL_LO));
-        let cross = lo * U32x8::splat(MUL_HI) + hi * U32x8::splat(MUL_LO);
-        let new_lo = p_lo + self.inc_lo;
-        // Carry out of the low word: the sum wrapped iff it is below an addend.
-        let carry = new_lo.simd_lt(self.inc_lo); // all ones (= −1) where a carry occurred
-        self.hi = p_hi + cross + self.inc_hi - carry;
-        self.lo = new_lo;
-        out
+        layout::next(&mut self.state, &self.inc)
     }
 
     /// The next output of every lane as a float in [0, 1): `(x >> 8) · 2⁻²⁴` for the 32-bit
@@ -168,19 +165,13 @@ impl Pcg32x8 {
 
     fn from_raw(states: [u64; 8], incs: [u64; 8]) -> Self {
         Self {
-            lo: U32x8::new(states.map(|s| s as u32)),
-            hi: U32x8::new(states.map(|s| (s >> 32) as u32)),
-            inc_lo: U32x8::new(incs.map(|s| s as u32)),
-            inc_hi: U32x8::new(incs.map(|s| (s >> 32) as u32)),
+            state: layout::Words::new(states),
+            inc: layout::Words::new(incs),
         }
     }
 
     fn raw(&self) -> ([u64; 8], [u64; 8]) {
-        let join = |lo: U32x8, hi: U32x8| {
-            let (lo, hi) = (lo.to_array(), hi.to_array());
-            core::array::from_fn(|i| (u64::from(hi[i]) << 32) | u64::from(lo[i]))
-        };
-        (join(self.lo, self.hi), join(self.inc_lo, self.inc_hi))
+        (self.state.get(), self.inc.get())
     }
 }
 

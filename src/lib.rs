@@ -72,6 +72,7 @@ pub mod distr;
 pub mod frame;
 pub mod lane;
 pub mod math;
+pub mod mis;
 pub mod point;
 pub mod rng;
 pub mod seq;

@@ -69,6 +69,7 @@ extern crate std;
 pub mod camera;
 #[cfg(feature = "rand")]
 pub mod distr;
+pub mod estimate;
 pub mod frame;
 pub mod lane;
 pub mod math;

@@ -92,7 +92,10 @@ impl PartialEq for Pcg32x8 {
 impl core::fmt::Debug for Pcg32x8 {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         let (states, incs) = self.raw();
-        f.debug_struct("Pcg32x8").field("states", &states).field("increments", &incs).finish()
+        f.debug_struct("Pcg32x8")
+            .field("states", &states)
+            .field("increments", &incs)
+            .finish()
     }
 }
 

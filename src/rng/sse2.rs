@@ -24,7 +24,9 @@ pub(super) struct Words([m128i; 4]);
 
 impl Words {
     pub(super) fn new(x: [u64; 8]) -> Self {
-        Self(core::array::from_fn(|j| bytemuck::cast([x[2 * j], x[2 * j + 1]])))
+        Self(core::array::from_fn(|j| {
+            bytemuck::cast([x[2 * j], x[2 * j + 1]])
+        }))
     }
 
     pub(super) fn get(&self) -> [u64; 8] {

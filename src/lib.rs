@@ -75,6 +75,7 @@ pub mod lane;
 pub mod math;
 pub mod mis;
 pub mod point;
+pub mod reference;
 pub mod rng;
 pub mod seq;
 pub mod warp;

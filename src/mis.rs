@@ -194,12 +194,21 @@ pub struct Choice<L: Lane32> {
 /// returned u is the position within it, (u·Σc − Σ_{k<i} cₖ)/cᵢ, clamped to [0, 1 − 2⁻²⁴]. So a
 /// stratified u stays stratified within each technique.
 ///
-/// Zero, negative and NaN probabilities are never chosen; u is clamped to [0, 1), and NaN u acts
-/// as 0. If no cᵢ is positive, the result is index 0 with probability 0 (the estimate must then be
+/// Zero, negative, infinite and NaN probabilities are never chosen (the others need not sum to
+/// 1: they are normalised); u is clamped to [0, 1), and NaN u acts as 0. If no cᵢ is positive, the result is index 0 with probability 0 (the estimate must then be
 /// 0). Rounding at a boundary can only move u to a neighbouring technique with cᵢ > 0.
 #[inline(always)]
 pub fn one_sample<L: Lane32, const N: usize>(c: [L; N], u: L) -> Choice<L> {
-    let c: [L; N] = core::array::from_fn(|k| L::select(c[k].gt(L::ZERO), c[k], L::ZERO));
+    // Only positive finite probabilities count; dividing by the largest keeps their sum finite.
+    let inf = L::c(f64::INFINITY);
+    let c: [L; N] =
+        core::array::from_fn(|k| L::select(c[k].gt(L::ZERO) & c[k].lt(inf), c[k], L::ZERO));
+    let mut largest = L::ZERO;
+    for &x in &c {
+        largest = x.max(largest);
+    }
+    let c: [L; N] =
+        core::array::from_fn(|k| c[k] / L::select(largest.gt(L::ZERO), largest, L::ONE));
     let mut total = L::ZERO;
     for &x in &c {
         total = total + x;
@@ -273,7 +282,9 @@ fn pick<L: Lane>(m: L::Mask, a: (L, L, L), b: (L, L, L)) -> (L, L, L) {
 /// two pdfs are proportional over the samples: det ≤ 1e-9·A₁₁A₂₂), there is no control variate to
 /// fit and [`estimate`](Self::estimate) returns the balance-heuristic estimate Σf/S instead, as
 /// does [`balance_estimate`](Self::balance_estimate) always. Samples with a NaN or infinite f or
-/// pdf, a negative pdf, or S = 0 are counted but contribute nothing (their f/S is undefined).
+/// pdf, a negative pdf, S = 0, or terms beyond f64's range (pdf/S above 1e154, from counts tiny
+/// against the pdfs) are counted but contribute nothing. The estimate is therefore finite unless
+/// the sums of finite terms themselves overflow; it is never NaN.
 ///
 /// Sums are in f64. The packet form is [`OptimalMisX8`].
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -308,14 +319,17 @@ impl OptimalMis {
         if !(ok(pdf1) && ok(pdf2) && f.is_finite() && s > 0.0 && s.is_finite()) {
             return;
         }
-        let (q1, q2) = (pdf1 / s, pdf2 / s);
-        self.a[0] += q1 * q1;
-        self.a[1] += q1 * q2;
-        self.a[2] += q2 * q2;
-        let g = f / s;
-        self.b[0] += g * q1;
-        self.b[1] += g * q2;
-        self.balance += g;
+        let (q1, q2, g) = (pdf1 / s, pdf2 / s, f / s);
+        let terms = [q1 * q1, q1 * q2, q2 * q2, g * q1, g * q2, g];
+        // pdf/S beyond 1e154 (tiny counts against large pdfs) would overflow a square.
+        if terms.iter().all(|t| t.is_finite()) {
+            for (acc, t) in self.a.iter_mut().zip(&terms[..3]) {
+                *acc += t;
+            }
+            self.b[0] += terms[3];
+            self.b[1] += terms[4];
+            self.balance += g;
+        }
     }
 
     /// The samples pushed so far.
@@ -325,15 +339,27 @@ impl OptimalMis {
 
     /// The solved α, or `None` where the system is singular (see the type's documentation).
     pub fn alpha(&self) -> Option<[f64; 2]> {
-        let [a11, a12, a22] = self.a;
+        // Cramer's rule on A/ka and b/kb, whose entries are at most 1, so that no product
+        // overflows; α = (kb/ka)·(A/ka)⁻¹(b/kb).
+        let ka = self.a[0].max(self.a[2]);
+        let kb = self.b[0].abs().max(self.b[1].abs());
+        if !(ka > 0.0 && ka.is_finite() && kb.is_finite()) {
+            return None;
+        }
+        if kb == 0.0 {
+            return Some([0.0, 0.0]);
+        }
+        let [a11, a12, a22] = self.a.map(|x| x / ka);
+        let [b1, b2] = self.b.map(|x| x / kb);
         let det = a11 * a22 - a12 * a12;
         // Cauchy–Schwarz makes det ≥ 0; near 0 the system carries no information.
         let regular = det > 1e-9 * a11 * a22;
-        if !regular {
-            return None;
-        }
-        let [b1, b2] = self.b;
-        Some([(a22 * b1 - a12 * b2) / det, (a11 * b2 - a12 * b1) / det])
+        let scale = kb / ka;
+        let alpha = [
+            (a22 * b1 - a12 * b2) / det * scale,
+            (a11 * b2 - a12 * b1) / det * scale,
+        ];
+        (regular && alpha.iter().all(|x| x.is_finite())).then_some(alpha)
     }
 
     /// The balance-heuristic estimate from the same samples: Σf/S over the rounds of n₁ + n₂
@@ -385,7 +411,10 @@ impl FixedAlpha {
         let s = self.counts[0] * pdf1 + self.counts[1] * pdf2;
         let ok = |x: f64| x.is_finite() && x >= 0.0;
         if ok(pdf1) && ok(pdf2) && f.is_finite() && s > 0.0 && s.is_finite() {
-            self.residual += (f - self.alpha[0] * pdf1 - self.alpha[1] * pdf2) / s;
+            let r = (f - self.alpha[0] * pdf1 - self.alpha[1] * pdf2) / s;
+            if r.is_finite() {
+                self.residual += r;
+            }
         }
     }
 

@@ -334,6 +334,10 @@ fn one_sample_choice_and_rescaled_u() {
     assert_eq!((none.index, none.probability, none.u), (0, 0.0, 0.3));
     let nan_u = mis::one_sample([1.0f32, 1.0], f32::NAN);
     assert_eq!((nan_u.index, nan_u.u), (0, 0.0));
+    let inf = mis::one_sample([f32::INFINITY, 1.0], 0.3);
+    assert_eq!((inf.index, inf.probability), (1, 1.0));
+    let huge = mis::one_sample([f32::MAX, f32::MAX], 0.75);
+    assert_eq!((huge.index, huge.probability, huge.u), (1, 0.5, 0.5));
     let top = mis::one_sample([1.0f32, 1.0, 0.0], 1.0);
     assert_eq!(top.index, 1);
     assert!(top.u < 1.0);

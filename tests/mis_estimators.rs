@@ -1,7 +1,9 @@
 //! Optimal MIS (Kondapaneni et al. 2019) and resampled importance sampling (Talbot et al. 2005)
 //! on 1D integrands over [0, 1] with exact integrals.
 //!
-//! The two techniques: p₁ = 1 (x = u) and p₂ = 2x (x = √u), four samples each per estimate.
+//! The problems are `mcsample::verify::mis1d`'s: p₁ = 1 (x = u) and p₂ = 2x (x = √u), four samples
+//! each per estimate, and integrands with exact integrals (their α comes from Simpson quadrature
+//! of the defining integrals).
 
 mod common;
 
@@ -11,55 +13,13 @@ use mcsample::lane::F32x8;
 use mcsample::mis::{self, FixedAlpha, OptimalMis, Reservoir};
 use mcsample::verify::chi2_sf;
 
+use mcsample::verify::mis1d::{self, INTEGRANDS, exact_alpha, pdf1 as p1, pdf2 as p2};
+
 const N1: usize = 4;
 const N2: usize = 4;
 
-fn p1(_x: f64) -> f64 {
-    1.0
-}
-fn p2(x: f64) -> f64 {
-    2.0 * x
-}
 fn s(x: f64) -> f64 {
     N1 as f64 * p1(x) + N2 as f64 * p2(x)
-}
-
-/// (name, f, ∫f): a cubic against p₁, a decreasing quadratic against p₂, a mixture of the two
-/// pdfs not proportional to S (where the optimal weights have zero variance and balance does
-/// not), and a steep x⁵.
-type Integrand = (&'static str, fn(f64) -> f64, f64);
-const INTEGRANDS: [Integrand; 4] = [
-    ("x³ + 0.05", |x| x * x * x + 0.05, 0.3),
-    (
-        "(1 − x)² + 0.2",
-        |x| (1.0 - x) * (1.0 - x) + 0.2,
-        1.0 / 3.0 + 0.2,
-    ),
-    ("0.8p₁ + 0.2p₂", |x| 0.8 + 0.4 * x, 1.0),
-    ("6x⁵", |x| 6.0 * x.powi(5), 1.0),
-];
-
-/// ∫₀¹ g by composite Simpson on 2·10⁵ intervals (the integrands here are polynomials over a
-/// linear S ≥ 4: smooth, so the error is far below 1e-12).
-fn simpson(g: impl Fn(f64) -> f64) -> f64 {
-    let n = 200_000;
-    let h = 1.0 / n as f64;
-    let mut sum = g(0.0) + g(1.0);
-    for i in 1..n {
-        sum += g(i as f64 * h) * if i % 2 == 1 { 4.0 } else { 2.0 };
-    }
-    sum * h / 3.0
-}
-
-/// α from the exact integrals A_ik = ∫pᵢpₖ/S, bᵢ = ∫f·pᵢ/S.
-fn exact_alpha(f: fn(f64) -> f64) -> [f64; 2] {
-    let a11 = simpson(|x| p1(x) * p1(x) / s(x));
-    let a12 = simpson(|x| p1(x) * p2(x) / s(x));
-    let a22 = simpson(|x| p2(x) * p2(x) / s(x));
-    let b1 = simpson(|x| f(x) * p1(x) / s(x));
-    let b2 = simpson(|x| f(x) * p2(x) / s(x));
-    let det = a11 * a22 - a12 * a12;
-    [(a22 * b1 - a12 * b2) / det, (a11 * b2 - a12 * b1) / det]
 }
 
 /// One estimate's eight samples: four from each technique.
@@ -135,8 +95,8 @@ fn run(f: fn(f64) -> f64, alpha: [f64; 2], rounds: usize, seed: u64) -> Variance
 /// wrong α, the negative control, exceeds balance); the direct mode's bias is below 0.5 %.
 #[test]
 fn optimal_mis_on_known_integrands() {
-    for (k, (name, f, integral)) in INTEGRANDS.iter().enumerate() {
-        let alpha = exact_alpha(*f);
+    for (k, mis1d::Integrand { name, f, integral }) in INTEGRANDS.iter().enumerate() {
+        let alpha = exact_alpha(*f, N1 as f64, N2 as f64);
         let v = run(*f, alpha, 200_000, 30 + k as u64);
         let pooled = v.pooled.alpha().expect("a regular system");
         for i in 0..2 {
@@ -359,7 +319,7 @@ fn reservoir_choice_is_stratified_and_robust() {
 /// bias at 4 (1/N predicts a sixteenth) and below 1 % of the integral.
 #[test]
 fn optimal_mis_direct_bias_falls_as_one_over_n() {
-    for (k, (name, f, integral)) in INTEGRANDS.iter().enumerate() {
+    for (k, mis1d::Integrand { name, f, integral }) in INTEGRANDS.iter().enumerate() {
         let mut rng = TestRng::new(80 + k as u64);
         let mut bias = Vec::new();
         for n in [4usize, 16, 64] {
@@ -387,5 +347,39 @@ fn optimal_mis_direct_bias_falls_as_one_over_n() {
             b64.abs() <= b4.abs() / 6.0 + 4.0 * bias[2].1,
             "{name}: {b4} → {b64}"
         );
+    }
+}
+
+/// The report's comparison: every unbiased estimator's mean is within 4σ of the integral, the
+/// optimal fixed-α estimator has the smallest variance of all MIS estimators, and the direct one
+/// is within its documented bias.
+#[test]
+fn report_comparison_is_sound() {
+    for (k, integrand) in INTEGRANDS.iter().enumerate() {
+        let rows = mis1d::compare(integrand, 4, 50_000, 90 + k as u64);
+        for (name, acc) in mis1d::ESTIMATORS.iter().zip(&rows) {
+            if *name == "optimal (direct)" {
+                let bias = (acc.mean() - integrand.integral) / integrand.integral;
+                assert!(bias.abs() < 0.2, "{}: direct bias {bias}", integrand.name);
+                continue;
+            }
+            assert!(
+                (acc.mean() - integrand.integral).abs() <= 4.0 * acc.std_error() + 1e-12,
+                "{} / {name}: {} ± {} against {}",
+                integrand.name,
+                acc.mean(),
+                acc.std_error(),
+                integrand.integral
+            );
+        }
+        let fixed = rows[8].variance();
+        for i in 2..6 {
+            assert!(
+                fixed <= rows[i].variance(),
+                "{}: {} beats optimal",
+                integrand.name,
+                mis1d::ESTIMATORS[i]
+            );
+        }
     }
 }

@@ -8,6 +8,7 @@
 //! and the disk indicator (see `sequences.rs`). `-- --quick` is a shorter run for CI;
 //! `-- --json PATH` also writes the numbers as JSON.
 
+mod estimators;
 mod plain;
 mod sequences;
 
@@ -405,6 +406,46 @@ fn main() {
             r.slope_disk
         );
     }
+    println!(
+        "\nestimators: variance per estimate relative to the better single technique, at {} + {}",
+        estimators::N,
+        estimators::N
+    );
+    println!(
+        "  samples (techniques p₁ = 1 and p₂ = 2x on [0, 1]; alone, each takes {} samples; RIS takes",
+        2 * estimators::N
+    );
+    println!("  that many candidates from p₁ per f evaluation):");
+    let est = estimators::variances(&cfg);
+    let names = mcsample::verify::mis1d::ESTIMATORS;
+    print!("{:<22}", "estimator");
+    for i in mcsample::verify::mis1d::INTEGRANDS {
+        print!(" {:>16}", i.name);
+    }
+    println!();
+    for (k, name) in names.iter().enumerate() {
+        print!("{name:<22}");
+        for row in est.iter().skip(k).step_by(names.len()) {
+            print!(" {:>16.3e}", row.vs_best_single);
+        }
+        println!();
+    }
+    let weights = estimators::weight_times(&cfg);
+    println!("\nMIS weights, ns per weight (pdfs over twelve decades):");
+    println!(
+        "{:<12} {:>10} {:>10} {:>8}",
+        "heuristic", "scalar", "x8", "speedup"
+    );
+    for w in &weights {
+        println!(
+            "{:<12} {:>10.3} {:>10.3} {:>7.1}×",
+            w.name,
+            w.scalar_ns,
+            w.x8_ns,
+            w.scalar_ns / w.x8_ns
+        );
+    }
+
     let (copy_ns, cos_ns) = streaming(&cfg);
     println!(
         "\nstreaming ({} points): copy kernel {copy_ns:.3} ns/pt, x8 cosine_hemisphere {cos_ns:.3} ns/pt, ratio {:.2}",
@@ -481,6 +522,35 @@ fn main() {
                 num(r.l2_star_1024),
                 num(r.slope_gaussian),
                 num(r.slope_disk)
+            )
+            .unwrap();
+        }
+        s.push_str("], \"estimators\": [");
+        for (i, r) in est.iter().enumerate() {
+            if i > 0 {
+                s.push_str(", ");
+            }
+            write!(
+                s,
+                "{{\"integrand\": \"{}\", \"estimator\": \"{}\", \"variance\": {}, \"vs_best_single\": {}}}",
+                esc(r.integrand),
+                esc(r.estimator),
+                num(r.variance),
+                num(r.vs_best_single)
+            )
+            .unwrap();
+        }
+        s.push_str("], \"mis_weights\": [");
+        for (i, w) in weights.iter().enumerate() {
+            if i > 0 {
+                s.push_str(", ");
+            }
+            write!(
+                s,
+                "{{\"name\": \"{}\", \"scalar_ns\": {}, \"x8_ns\": {}}}",
+                w.name,
+                num(w.scalar_ns),
+                num(w.x8_ns)
             )
             .unwrap();
         }

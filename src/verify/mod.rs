@@ -96,6 +96,7 @@ mod cap;
 mod chi2;
 mod gamma;
 mod lanes;
+pub mod mis1d;
 mod planar;
 pub mod registry;
 

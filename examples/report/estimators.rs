@@ -1,0 +1,100 @@
+//! The estimators table: on `verify::mis1d`'s problems, the variance of every MIS heuristic, of
+//! optimal MIS, one-sample MIS and RIS relative to the best single technique at equal sample
+//! counts; and the time per MIS weight, scalar and x8.
+
+use glam::Vec4;
+use mcsample::lane::F32x8;
+use mcsample::mis;
+use mcsample::verify::mis1d::{self, ESTIMATORS, INTEGRANDS};
+
+use crate::{Config, time_pair};
+
+pub struct EstRow {
+    pub integrand: &'static str,
+    pub estimator: &'static str,
+    pub variance: f64,
+    pub vs_best_single: f64,
+}
+
+pub struct WeightRow {
+    pub name: &'static str,
+    pub scalar_ns: f64,
+    pub x8_ns: f64,
+}
+
+/// Samples per technique in one estimate.
+pub const N: usize = 4;
+
+pub fn variances(cfg: &Config) -> Vec<EstRow> {
+    let rounds = if cfg.quick { 20_000 } else { 200_000 };
+    let mut rows = Vec::new();
+    for (k, integrand) in INTEGRANDS.iter().enumerate() {
+        let acc = mis1d::compare(integrand, N, rounds, 100 + k as u64);
+        let best = acc[0].variance().min(acc[1].variance());
+        for (estimator, a) in ESTIMATORS.iter().zip(&acc) {
+            rows.push(EstRow {
+                integrand: integrand.name,
+                estimator,
+                variance: a.variance(),
+                vs_best_single: a.variance() / best,
+            });
+        }
+    }
+    rows
+}
+
+type Scalar = fn(f32, f32, f32, f32) -> f32;
+type Packet = fn(F32x8, F32x8, F32x8, F32x8) -> F32x8;
+
+pub fn weight_times(cfg: &Config) -> Vec<WeightRow> {
+    // (n_f, pdf_f, n_g, pdf_g) with pdfs spread over twelve decades.
+    let mut state = 0x2545_f491_u32;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 17;
+        state ^= state << 5;
+        state
+    };
+    let quads: Vec<Vec4> = (0..crate::POINTS)
+        .map(|_| {
+            let pdf = |x: u32| 10f32.powf((x >> 8) as f32 / 16_777_216.0 * 12.0 - 6.0);
+            Vec4::new(1.0 + (next() % 4) as f32, pdf(next()), 1.0, pdf(next()))
+        })
+        .collect();
+    let packets: Vec<[F32x8; 4]> = quads
+        .chunks_exact(8)
+        .map(|c| core::array::from_fn(|k| F32x8::new(core::array::from_fn(|i| c[i][k]))))
+        .collect();
+    let cutoff: Scalar = |a, b, c, d| mis::cutoff(a, b, c, d, 0.1);
+    let cutoff_x8: Packet = |a, b, c, d| mis::x8::cutoff(a, b, c, d, F32x8::splat(0.1));
+    let all: [(&str, Scalar, Packet); 4] = [
+        ("balance", mis::balance, mis::x8::balance),
+        ("power", mis::power, mis::x8::power),
+        ("maximum", mis::maximum, mis::x8::maximum),
+        ("cutoff", cutoff, cutoff_x8),
+    ];
+    all.iter()
+        .map(|&(name, f, fx8)| {
+            let (scalar_ns, x8_ns) = time_pair(
+                cfg,
+                &quads,
+                &packets,
+                &|q: &[Vec4], out: &mut [f32]| {
+                    for (o, q) in out.iter_mut().zip(q) {
+                        *o = f(q.x, q.y, q.z, q.w);
+                    }
+                },
+                &|p: &[[F32x8; 4]], out: &mut [F32x8]| {
+                    for (o, p) in out.iter_mut().zip(p) {
+                        *o = fx8(p[0], p[1], p[2], p[3]);
+                    }
+                },
+            );
+            WeightRow {
+                name,
+                scalar_ns,
+                x8_ns,
+            }
+        })
+        .collect()
+}

@@ -6,6 +6,9 @@
 use crate::estimate::MeanVar;
 use crate::mis::{self, FixedAlpha, OptimalMis, Reservoir};
 
+/// A two-technique heuristic: (n_f, pdf_f, n_g, pdf_g) → weight of f.
+type Heuristic = fn(f32, f32, f32, f32) -> f32;
+
 /// The first technique's density: uniform.
 pub fn pdf1(_x: f64) -> f64 {
     1.0
@@ -114,7 +117,7 @@ pub fn compare(integrand: &Integrand, n: usize, rounds: usize, seed: u64) -> [Me
         ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
     };
     let mut out = [MeanVar::new(); 11];
-    let w32 = |h: fn(f32, f32, f32, f32) -> f32, own: f64, other: f64| {
+    let w32 = |h: Heuristic, own: f64, other: f64| {
         f64::from(h(n as f32, own as f32, n as f32, other as f32))
     };
     let cutoff = |a, b, c, d| mis::cutoff(a, b, c, d, 0.1);
@@ -132,8 +135,7 @@ pub fn compare(integrand: &Integrand, n: usize, rounds: usize, seed: u64) -> [Me
             let (x, tech) = if j < n { (u, 0) } else { (x2, 1) };
             let (p1, p2) = (pdf1(x), pdf2(x));
             let (own, other) = if tech == 0 { (p1, p2) } else { (p2, p1) };
-            let heuristics: [fn(f32, f32, f32, f32) -> f32; 4] =
-                [mis::balance, mis::power, mis::maximum, cutoff];
+            let heuristics: [Heuristic; 4] = [mis::balance, mis::power, mis::maximum, cutoff];
             for (acc, weight) in h.iter_mut().zip(heuristics) {
                 *acc += w32(weight, own, other) * f(x) / (nf * own);
             }

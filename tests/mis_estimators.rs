@@ -373,12 +373,11 @@ fn report_comparison_is_sound() {
             );
         }
         let fixed = rows[8].variance();
-        for i in 2..6 {
+        for (name, row) in mis1d::ESTIMATORS.iter().zip(&rows).take(6).skip(2) {
             assert!(
-                fixed <= rows[i].variance(),
-                "{}: {} beats optimal",
-                integrand.name,
-                mis1d::ESTIMATORS[i]
+                fixed <= row.variance(),
+                "{}: {name} beats optimal",
+                integrand.name
             );
         }
     }

@@ -24,9 +24,12 @@
 //!   promises (`doc_*`): clamped u, cone h and Phong n, pdfs of 0 outside the support, degenerate
 //!   polygons.
 //!
-//! Case numbers are stable names; the gaps (13, 16) are hard cases of MIS weights and sphere
-//! lights, which this crate does not have. A case may check many inputs: it collects every
-//! sub-failure and reports them together.
+//! - MIS weights in ratio form at extreme pdfs (13) and with sample counts (25), and Russian
+//!   roulette with a continuation probability below its floor (18).
+//!
+//! Case numbers are stable names; the gaps (16, 19–24, 26) are hard cases of the scene's lights
+//! and BSDFs, which land with them (19, the generators' u < 1, lives in `seq_generators`). A case
+//! may check many inputs: it collects every sub-failure and reports them together.
 
 mod common;
 
@@ -34,7 +37,9 @@ use std::rc::Rc;
 
 use common::*;
 use glam::{Vec2, Vec3};
+use mcsample::estimate::{self, MeanVar};
 use mcsample::frame::Frame;
+use mcsample::mis;
 use mcsample::verify::{Bits, LaneMismatch, Scalar, check_lanes};
 use mcsample::warp::{self, ONE_MINUS_EPS};
 use mcsample::x8::{F32x8, Vec2x8, Vec3x8};
@@ -1549,6 +1554,107 @@ hard_case!(
                         )
                     }));
             }
+        }
+        collect(r)
+    }
+);
+
+hard_case!(
+    case_13_power_and_balance_in_ratio_form_at_extreme_pdfs,
+    "power(1e20, 1e20) = power(1e-25, 1e-25) = 0.5, power(∞, 1) = 1, power(0, 0) = 0; balance likewise; both widths",
+    || {
+        let inf = f32::INFINITY;
+        let cases: [([f32; 4], f32); 5] = [
+            ([1.0, 1e20, 1.0, 1e20], 0.5),
+            ([1.0, 1e-25, 1.0, 1e-25], 0.5),
+            ([1.0, inf, 1.0, 1.0], 1.0),
+            ([1.0, 0.0, 1.0, 0.0], 0.0),
+            ([1.0, 1.0, 1.0, 0.0], 1.0),
+        ];
+        let mut r = vec![];
+        for (x, want) in cases {
+            for (name, w, w8) in [
+                (
+                    "power",
+                    mis::power(x[0], x[1], x[2], x[3]),
+                    mis::x8::power(
+                        F32x8::splat(x[0]),
+                        F32x8::splat(x[1]),
+                        F32x8::splat(x[2]),
+                        F32x8::splat(x[3]),
+                    ),
+                ),
+                (
+                    "balance",
+                    mis::balance(x[0], x[1], x[2], x[3]),
+                    mis::x8::balance(
+                        F32x8::splat(x[0]),
+                        F32x8::splat(x[1]),
+                        F32x8::splat(x[2]),
+                        F32x8::splat(x[3]),
+                    ),
+                ),
+            ] {
+                r.push(check(w == want, || {
+                    format!("{name}{x:?} = {w}, want {want}")
+                }));
+                r.push(check(
+                    w8.to_array().iter().all(|l| l.to_bits() == w.to_bits()),
+                    || format!("{name}{x:?}: packet {w8:?} against scalar {w}"),
+                ));
+            }
+        }
+        collect(r)
+    }
+);
+
+hard_case!(
+    case_18_roulette_q_1e_6_is_clamped_and_stays_unbiased,
+    "roulette with q = 1e-6 clamps to ROULETTE_Q_MIN; the mean over 1e6 trials matches no roulette within 4σ",
+    || {
+        let mut r = vec![];
+        let w = estimate::roulette(1e-6f32, 0.0);
+        r.push(check(w == 1.0 / estimate::ROULETTE_Q_MIN, || {
+            format!("roulette(1e-6, 0) = {w}")
+        }));
+        let mut rng = TestRng::new(18);
+        let mut acc = MeanVar::new();
+        for _ in 0..1_000_000 {
+            let f = rng.u01() as f64; // E[f] = ½ without roulette
+            acc.push(f64::from(estimate::roulette(1e-6f32, rng.u01())) * f);
+        }
+        r.push(check(
+            (acc.mean() - 0.5).abs() < 4.0 * acc.std_error(),
+            || format!("mean {} ± {} against 0.5", acc.mean(), acc.std_error()),
+        ));
+        collect(r)
+    }
+);
+
+hard_case!(
+    case_25_mis_weights_carry_the_counts_and_a_zero_count_gets_weight_0,
+    "n_light = 2, n_bsdf = 1: w_l + w_b = 1 with the counts inside; a technique with count 0 gets weight 0",
+    || {
+        let mut r = vec![];
+        let (pl, pb) = (0.7f32, 0.7f32);
+        for (name, h) in [
+            ("balance", mis::balance as fn(f32, f32, f32, f32) -> f32),
+            ("power", mis::power),
+        ] {
+            let (wl, wb) = (h(2.0, pl, 1.0, pb), h(1.0, pb, 2.0, pl));
+            r.push(check((wl + wb - 1.0).abs() <= f32::EPSILON, || {
+                format!("{name}: {wl} + {wb}")
+            }));
+            let want = if name == "balance" { 2.0 / 3.0 } else { 0.8 };
+            r.push(check((wl as f64 - want).abs() < 1e-6, || {
+                format!("{name}: w_l = {wl}, want {want}")
+            }));
+            r.push(check(h(0.0, pl, 1.0, pb) == 0.0, || {
+                format!("{name}: count 0 gives {}", h(0.0, pl, 1.0, pb))
+            }));
+            r.push(check(h(1.0, pb, 0.0, pl) == 1.0, || {
+                format!("{name}: against count 0 gives {}", h(1.0, pb, 0.0, pl))
+            }));
         }
         collect(r)
     }

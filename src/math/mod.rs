@@ -89,7 +89,7 @@
 //! | function | method | ops | of which mul_add | div/sqrt |
 //! |---|---|---|---|---|
 //! | `sin_cos` | j = round(2x/π); r = x − j·π/2 with a 4-part Cody–Waite constant (three 12-bit parts and an f32 tail, so j·C₁, j·C₂, j·C₃ are exact without FMA for \|j\| < 2¹²) and Fast2Sum to round r once and keep its remainder; degree-7 sin and degree-8 cos in r; quadrant from the bits of j | ~49 | 10 | — |
-//! | `sincos_2pi` | r = u − round(u), q = round(4r), f = 4r − q (all exact); the `sincos_pi4` polynomials with coefficients scaled to quarter turns; quadrant by selects | ~38 | 8 | — |
+//! | `sincos_2pi` | r = u − round(u), q = round(4r), f = 4r − q (all exact); the `sincos_pi4` polynomials with coefficients scaled to quarter turns; the quadrant by an exact rotation (products with 0 and ±1), not selects; `sincos_2pi_unit` drops the reduction's sign and large-argument handling for u ∈ [0, 1] | ~38 (~33 unit) | 8 | — |
 //! | `sincos_pi4` | degree-7 sin with π/4 split in two f32, degree-8 cos | 10 | 8 | — |
 //! | `atan2` | t = min/max, or (min − max)/(min + max) above ½ (one division either way); degree-11 odd polynomial on \|t\| ≤ ½; octant fix as k·π/4 ± atan t with π/4 in two parts | ~49 | 6 | 1 div |
 //! | `asin` / `acos` | degree-11 odd polynomial on [0, ½]; above ½ the half-angle form with √((1−\|x\|)/2) | ~22 / ~26 | 6 / 7 | 1 sqrt |
@@ -112,6 +112,10 @@ pub trait Math: Lane {
     fn sin_cos(self) -> (Self, Self);
     /// sin and cos of 2π·self, with exact range reduction in `self`.
     fn sincos_2pi(self) -> (Self, Self);
+    /// [`sincos_2pi`](Math::sincos_2pi) for self ∈ [0, 1] (the warps' clamped u), bit for bit,
+    /// without the reduction that larger arguments need. Outside [0, 1] it is not the same
+    /// function: call `sincos_2pi` there.
+    fn sincos_2pi_unit(self) -> (Self, Self);
     /// sin and cos of (π/4)·self for self in [−1, 1], with no range reduction.
     fn sincos_pi4(self) -> (Self, Self);
     /// Four-quadrant arctangent of `self / x`, in [−π, π].
@@ -137,6 +141,7 @@ macro_rules! own_math {
             inline_fns! {
                 fn sin_cos(self) -> (Self, Self) { trig::sin_cos(self) }
                 fn sincos_2pi(self) -> (Self, Self) { trig::sincos_2pi(self) }
+                fn sincos_2pi_unit(self) -> (Self, Self) { trig::sincos_2pi_unit(self) }
                 fn sincos_pi4(self) -> (Self, Self) { trig::sincos_pi4(self) }
                 fn atan2(self, x: Self) -> Self { atan::atan2(self, x) }
                 fn asin(self) -> Self { asin::asin(self) }
@@ -165,6 +170,10 @@ impl Math for f64 {
         // exactly (0, 1) in the reference too.
         let r = self - libm::round(self);
         libm::sincos(core::f64::consts::TAU * r)
+    }
+    #[inline]
+    fn sincos_2pi_unit(self) -> (Self, Self) {
+        self.sincos_2pi()
     }
     inline_fns! {
         fn sincos_pi4(self) -> (Self, Self) { libm::sincos(core::f64::consts::FRAC_PI_4 * self) }

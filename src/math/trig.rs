@@ -134,8 +134,22 @@ pub fn sincos_2pi<L: Lane32>(u: L) -> (L, L) {
     let two23 = L::c(8_388_608.0);
     let ra = (a + two23) - two23;
     let rnd = L::select(a.lt(two23), ra.copysign(u), u);
-    let r = u - rnd;
-    // Quarter turns: r = (q + f)/4 with q = round(4r) ∈ {−2, …, 2} and f ∈ [−½, ½], both exact.
+    quarter_turns(u - rnd)
+}
+
+/// [`sincos_2pi`] for u ∈ [0, 1], the warps' clamped u, bit for bit: there round(u) is
+/// (u + 2²³) − 2²³ with neither the sign nor the large-argument select. (At u = −0, which a clamp
+/// can leave, r is −0 instead of +0, and the quarter turns give the same bits.)
+#[inline(always)]
+pub fn sincos_2pi_unit<L: Lane32>(u: L) -> (L, L) {
+    let two23 = L::c(8_388_608.0);
+    quarter_turns(u - ((u + two23) - two23))
+}
+
+/// sin 2πr and cos 2πr for r ∈ [−½, ½].
+#[inline(always)]
+fn quarter_turns<L: Lane32>(r: L) -> (L, L) {
+    // r = (q + f)/4 with q = round(4r) ∈ {−2, …, 2} and f ∈ [−½, ½], both exact.
     let r4 = r * L::c(4.0);
     let q = round_small(r4);
     let (s, c) = kernel_eighths(r4 - q, A1_HI_V, SIN_V, COS_V);

@@ -41,7 +41,7 @@ pub fn uniform_cone<P: Point2<Lane = L>, L: Math>(u: P, h: L) -> P::Vec3 {
     let h = h.clamp(L::ZERO, L::c(H_MAX));
     let t = u.x * h;
     let sin_theta = sin_from_one_minus_cos(t);
-    let (s, c) = u.y.sincos_2pi();
+    let (s, c) = u.y.sincos_2pi_unit();
     let w = V3::new(sin_theta * c, sin_theta * s, L::ONE - t);
     Point3::from_lanes(w.nan_where(u.any_nan() | h.is_nan()))
 }

@@ -75,7 +75,7 @@ pub fn concentric_disk_inverse<P: Point2<Lane = L>, L: Math>(p: P) -> P {
 pub fn polar_disk<P: Point2<Lane = L>, L: Math>(u: P) -> P {
     let u = clamp_u(u.to_lanes());
     let r = u.x.sqrt();
-    let (s, c) = u.y.sincos_2pi();
+    let (s, c) = u.y.sincos_2pi_unit();
     P::from_lanes(V2::new(r * c, r * s).nan_where(u.any_nan()))
 }
 

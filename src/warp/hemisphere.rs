@@ -16,7 +16,7 @@ pub fn uniform_hemisphere<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
     let u = clamp_u(u.to_lanes());
     let z = u.x;
     let r = ((L::ONE - z) * (L::ONE + z)).max(L::ZERO).sqrt();
-    let (s, c) = u.y.sincos_2pi();
+    let (s, c) = u.y.sincos_2pi_unit();
     Point3::from_lanes(V3::new(r * c, r * s, z).nan_where(u.any_nan()))
 }
 

@@ -28,7 +28,7 @@ pub fn phong_lobe<P: Point2<Lane = L>, L: Math>(u: P, n: L) -> P::Vec3 {
     let n = clamp_n(n);
     let t = -(u.x.ln() / (n + L::ONE)).exp_m1();
     let sin_a = sin_from_one_minus_cos(t);
-    let (s, c) = u.y.sincos_2pi();
+    let (s, c) = u.y.sincos_2pi_unit();
     let w = V3::new(sin_a * c, sin_a * s, L::ONE - t);
     Point3::from_lanes(w.nan_where(u.any_nan() | n.is_nan()))
 }

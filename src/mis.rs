@@ -272,9 +272,9 @@ fn pick<L: Lane>(m: L::Mask, a: (L, L, L), b: (L, L, L)) -> (L, L, L) {
 /// - [`estimate`](Self::estimate), the direct estimate: α from the same samples. The residual sum
 ///   then vanishes exactly (Σₖnₖpₖ/S = 1), so F = α₁ + α₂. It is consistent, with a bias of
 ///   order 1/N that is not small for few samples: on the 1D integrands of
-///   `tests/mis_estimators.rs` it measured −3 % to −16 % of the integral at 4 samples per
-///   technique, −0.5 % to −2.4 % at 16 and −0.1 % to −0.44 % at 64 (0 where f lies in the span of
-///   the pdfs). Accumulate over many estimates, or use the unbiased form, where that matters.
+///   `tests/mis_estimators.rs` it measured −2.7 % to −14 % of the integral at 4 samples per
+///   technique, −0.48 % to −2.3 % at 16 and −0.10 % to −0.44 % at 64 (0 where f lies in the span
+///   of the pdfs). Accumulate over many estimates, or use the unbiased form, where that matters.
 /// - [`FixedAlpha`], the unbiased form: α fixed beforehand (from a pilot pass with this
 ///   accumulator, or from an analytic value), and the residual sum kept.
 ///

@@ -1,7 +1,7 @@
 //! Optimal MIS (Kondapaneni et al. 2019) and resampled importance sampling (Talbot et al. 2005)
 //! on 1D integrands over [0, 1] with exact integrals.
 //!
-//! The problems are `mcsample::verify::mis1d`'s: p₁ = 1 (x = u) and p₂ = 2x (x = √u), four samples
+//! The problems are `mcsample::verify::mis1d`'s: p₁ = 1 (x = u) and p₂ = 0.2 + 1.6x, four samples
 //! each per estimate, and integrands with exact integrals (their α comes from Simpson quadrature
 //! of the defining integrals).
 
@@ -26,7 +26,7 @@ fn s(x: f64) -> f64 {
 fn round(rng: &mut TestRng) -> [f64; N1 + N2] {
     core::array::from_fn(|j| {
         let u = (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
-        if j < N1 { u } else { u.sqrt() }
+        if j < N1 { u } else { mis1d::sample2(u) }
     })
 }
 
@@ -329,7 +329,7 @@ fn optimal_mis_direct_bias_falls_as_one_over_n() {
                 let mut est = OptimalMis::new(n as f64, n as f64);
                 for j in 0..2 * n {
                     let u = (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
-                    let x = if j < n { u } else { u.sqrt() };
+                    let x = if j < n { u } else { mis1d::sample2(u) };
                     est.push(f(x), p1(x), p2(x));
                 }
                 acc.push(est.estimate());

@@ -412,7 +412,7 @@ fn main() {
         estimators::N
     );
     println!(
-        "  samples (techniques p₁ = 1 and p₂ = 2x on [0, 1]; alone, each takes {} samples; RIS takes",
+        "  samples (techniques p₁ = 1 and p₂ = 0.2 + 1.6x on [0, 1]; alone, each takes {} samples; RIS takes",
         2 * estimators::N
     );
     println!("  that many candidates from p₁ per f evaluation):");

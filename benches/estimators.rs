@@ -11,6 +11,7 @@ use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_m
 use mcsample::estimate::MeanVar;
 use mcsample::lane::F32x8;
 use mcsample::mis::{self, OptimalMis, Reservoir};
+use mcsample::verify::mis1d::HEURISTICS;
 
 const N: usize = 4096;
 
@@ -31,9 +32,6 @@ fn quads() -> Vec<[f32; 4]> {
         .collect()
 }
 
-type Scalar = fn(f32, f32, f32, f32) -> f32;
-type Packet = fn(F32x8, F32x8, F32x8, F32x8) -> F32x8;
-
 fn weights(c: &mut Criterion) {
     let q = quads();
     let packets: Vec<[F32x8; 4]> = q
@@ -44,15 +42,7 @@ fn weights(c: &mut Criterion) {
     let mut out8 = vec![F32x8::ZERO; N / 8];
     let mut g = c.benchmark_group("mis");
     g.throughput(Throughput::Elements(N as u64));
-    let cutoff: Scalar = |a, b, c, d| mis::cutoff(a, b, c, d, 0.1);
-    let cutoff_x8: Packet = |a, b, c, d| mis::x8::cutoff(a, b, c, d, F32x8::splat(0.1));
-    let all: [(&str, Scalar, Packet); 4] = [
-        ("balance", mis::balance, mis::x8::balance),
-        ("power", mis::power, mis::x8::power),
-        ("maximum", mis::maximum, mis::x8::maximum),
-        ("cutoff", cutoff, cutoff_x8),
-    ];
-    for (name, f, fx8) in all {
+    for (name, f, fx8) in HEURISTICS {
         g.bench_function(BenchmarkId::new("scalar", name), |b| {
             b.iter(|| {
                 for (o, x) in out.iter_mut().zip(black_box(&q)) {

@@ -303,9 +303,8 @@ impl OptimalMis {
     /// such as one-sample MIS's selection probabilities are allowed). Negative or NaN counts act
     /// as 0.
     pub fn new(n1: f64, n2: f64) -> Self {
-        let c = |n: f64| if n > 0.0 { n } else { 0.0 };
         Self {
-            counts: [c(n1), c(n2)],
+            counts: counts(n1, n2),
             ..Self::default()
         }
     }
@@ -314,11 +313,9 @@ impl OptimalMis {
     #[inline]
     pub fn push(&mut self, f: f64, pdf1: f64, pdf2: f64) {
         self.samples += 1;
-        let s = self.counts[0] * pdf1 + self.counts[1] * pdf2;
-        let ok = |x: f64| x.is_finite() && x >= 0.0;
-        if !(ok(pdf1) && ok(pdf2) && f.is_finite() && s > 0.0 && s.is_finite()) {
+        let Some(s) = mixture(self.counts, f, pdf1, pdf2) else {
             return;
-        }
+        };
         let (q1, q2, g) = (pdf1 / s, pdf2 / s, f / s);
         let terms = [q1 * q1, q1 * q2, q2 * q2, g * q1, g * q2, g];
         // pdf/S beyond 1e154 (tiny counts against large pdfs) would overflow a square.
@@ -365,12 +362,7 @@ impl OptimalMis {
     /// The balance-heuristic estimate from the same samples: Σf/S over the rounds of n₁ + n₂
     /// samples seen. 0 before any sample.
     pub fn balance_estimate(&self) -> f64 {
-        let rounds = self.samples as f64 / (self.counts[0] + self.counts[1]);
-        if rounds > 0.0 {
-            self.balance / rounds
-        } else {
-            0.0
-        }
+        per_round(self.balance, self.samples, self.counts)
     }
 
     /// The direct optimal-MIS estimate α₁ + α₂ (consistent, bias of order 1/N), or the balance
@@ -396,9 +388,8 @@ pub struct FixedAlpha {
 impl FixedAlpha {
     /// An accumulator with sample counts n₁, n₂ per estimate and the fixed α.
     pub fn new(n1: f64, n2: f64, alpha: [f64; 2]) -> Self {
-        let c = |n: f64| if n > 0.0 { n } else { 0.0 };
         Self {
-            counts: [c(n1), c(n2)],
+            counts: counts(n1, n2),
             alpha,
             ..Self::default()
         }
@@ -408,9 +399,7 @@ impl FixedAlpha {
     #[inline]
     pub fn push(&mut self, f: f64, pdf1: f64, pdf2: f64) {
         self.samples += 1;
-        let s = self.counts[0] * pdf1 + self.counts[1] * pdf2;
-        let ok = |x: f64| x.is_finite() && x >= 0.0;
-        if ok(pdf1) && ok(pdf2) && f.is_finite() && s > 0.0 && s.is_finite() {
+        if let Some(s) = mixture(self.counts, f, pdf1, pdf2) {
             let r = (f - self.alpha[0] * pdf1 - self.alpha[1] * pdf2) / s;
             if r.is_finite() {
                 self.residual += r;
@@ -420,14 +409,27 @@ impl FixedAlpha {
 
     /// The unbiased estimate α₁ + α₂ + (residual sum per round of n₁ + n₂ samples).
     pub fn estimate(&self) -> f64 {
-        let rounds = self.samples as f64 / (self.counts[0] + self.counts[1]);
-        let residual = if rounds > 0.0 {
-            self.residual / rounds
-        } else {
-            0.0
-        };
-        self.alpha[0] + self.alpha[1] + residual
+        self.alpha[0] + self.alpha[1] + per_round(self.residual, self.samples, self.counts)
     }
+}
+
+/// Sample counts per estimate: negative or NaN act as 0.
+fn counts(n1: f64, n2: f64) -> [f64; 2] {
+    [n1, n2].map(|n| if n > 0.0 { n } else { 0.0 })
+}
+
+/// S = n₁p₁ + n₂p₂ for a usable sample: finite f, finite non-negative pdfs, 0 < S < ∞.
+#[inline(always)]
+fn mixture(counts: [f64; 2], f: f64, pdf1: f64, pdf2: f64) -> Option<f64> {
+    let ok = |x: f64| x.is_finite() && x >= 0.0;
+    let s = counts[0] * pdf1 + counts[1] * pdf2;
+    (ok(pdf1) && ok(pdf2) && f.is_finite() && s > 0.0 && s.is_finite()).then_some(s)
+}
+
+/// A sum over every sample, per round of n₁ + n₂ samples; 0 before any sample.
+fn per_round(sum: f64, samples: u64, counts: [f64; 2]) -> f64 {
+    let rounds = samples as f64 / (counts[0] + counts[1]);
+    if rounds > 0.0 { sum / rounds } else { 0.0 }
 }
 
 /// Eight independent [`OptimalMis`] accumulators, one per packet lane.

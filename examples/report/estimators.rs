@@ -4,8 +4,7 @@
 
 use glam::Vec4;
 use mcsample::lane::F32x8;
-use mcsample::mis;
-use mcsample::verify::mis1d::{self, ESTIMATORS, INTEGRANDS};
+use mcsample::verify::mis1d::{self, ESTIMATORS, HEURISTICS, INTEGRANDS};
 
 use crate::{Config, time_pair};
 
@@ -43,9 +42,6 @@ pub fn variances(cfg: &Config) -> Vec<EstRow> {
     rows
 }
 
-type Scalar = fn(f32, f32, f32, f32) -> f32;
-type Packet = fn(F32x8, F32x8, F32x8, F32x8) -> F32x8;
-
 pub fn weight_times(cfg: &Config) -> Vec<WeightRow> {
     // (n_f, pdf_f, n_g, pdf_g) with pdfs spread over twelve decades.
     let mut state = 0x2545_f491_u32;
@@ -65,15 +61,8 @@ pub fn weight_times(cfg: &Config) -> Vec<WeightRow> {
         .chunks_exact(8)
         .map(|c| core::array::from_fn(|k| F32x8::new(core::array::from_fn(|i| c[i][k]))))
         .collect();
-    let cutoff: Scalar = |a, b, c, d| mis::cutoff(a, b, c, d, 0.1);
-    let cutoff_x8: Packet = |a, b, c, d| mis::x8::cutoff(a, b, c, d, F32x8::splat(0.1));
-    let all: [(&str, Scalar, Packet); 4] = [
-        ("balance", mis::balance, mis::x8::balance),
-        ("power", mis::power, mis::x8::power),
-        ("maximum", mis::maximum, mis::x8::maximum),
-        ("cutoff", cutoff, cutoff_x8),
-    ];
-    all.iter()
+    HEURISTICS
+        .iter()
         .map(|&(name, f, fx8)| {
             let (scalar_ns, x8_ns) = time_pair(
                 cfg,

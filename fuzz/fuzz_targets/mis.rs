@@ -10,6 +10,7 @@
 use libfuzzer_sys::fuzz_target;
 use mcsample::lane::F32x8;
 use mcsample::mis;
+use mcsample::verify::mis1d::HEURISTICS;
 
 fn floats(data: &[u8]) -> [f32; 16] {
     let mut out = [0f32; 16];
@@ -23,23 +24,13 @@ fn weight(name: &str, w: f32) {
     assert!((0.0..=1.0).contains(&w), "{name}: weight {w}");
 }
 
-type Two = fn(f32, f32, f32, f32) -> f32;
-type TwoX8 = fn(F32x8, F32x8, F32x8, F32x8) -> F32x8;
 
 fuzz_target!(|data: &[u8]| {
     let x = floats(data);
     let (nf, pf, ng, pg, alpha) = (x[0], x[1], x[2], x[3], x[4]);
-    let cut: Two = |a, b, c, d| mis::cutoff(a, b, c, d, 0.3);
-    let cut_x8: TwoX8 = |a, b, c, d| mis::x8::cutoff(a, b, c, d, F32x8::splat(0.3));
-    let heuristics: [(&str, Two, TwoX8); 4] = [
-        ("balance", mis::balance, mis::x8::balance),
-        ("power", mis::power, mis::x8::power),
-        ("maximum", mis::maximum, mis::x8::maximum),
-        ("cutoff", cut, cut_x8),
-    ];
     let finite = x[..4].iter().all(|v| !v.is_nan());
     let positive = |n: f32, p: f32| n > 0.0 && p > 0.0;
-    for (name, f, fx8) in heuristics {
+    for (name, f, fx8) in HEURISTICS {
         let (wf, wg) = (f(nf, pf, ng, pg), f(ng, pg, nf, pf));
         weight(name, wf);
         weight(name, wg);

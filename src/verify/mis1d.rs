@@ -6,8 +6,25 @@
 use crate::estimate::MeanVar;
 use crate::mis::{self, FixedAlpha, OptimalMis, Reservoir};
 
+use crate::lane::F32x8;
+
 /// A two-technique heuristic: (n_f, pdf_f, n_g, pdf_g) → weight of f.
-type Heuristic = fn(f32, f32, f32, f32) -> f32;
+pub type Heuristic = fn(f32, f32, f32, f32) -> f32;
+/// The same in the packet width.
+pub type HeuristicX8 = fn(F32x8, F32x8, F32x8, F32x8) -> F32x8;
+
+/// Every two-technique heuristic of [`mis`] in both widths, the cutoff at α = 0.1: what the
+/// report, the benches and the fuzz target iterate.
+pub const HEURISTICS: [(&str, Heuristic, HeuristicX8); 4] = [
+    ("balance", mis::balance, mis::x8::balance),
+    ("power", mis::power, mis::x8::power),
+    ("maximum", mis::maximum, mis::x8::maximum),
+    (
+        "cutoff",
+        |a, b, c, d| mis::cutoff(a, b, c, d, 0.1),
+        |a, b, c, d| mis::x8::cutoff(a, b, c, d, F32x8::splat(0.1)),
+    ),
+];
 
 /// The first technique's density: uniform.
 pub fn pdf1(_x: f64) -> f64 {
@@ -128,7 +145,6 @@ pub fn compare(integrand: &Integrand, n: usize, rounds: usize, seed: u64) -> [Me
     let w32 = |h: Heuristic, own: f64, other: f64| {
         f64::from(h(n as f32, own as f32, n as f32, other as f32))
     };
-    let cutoff = |a, b, c, d| mis::cutoff(a, b, c, d, 0.1);
     for _ in 0..rounds {
         let (mut single, mut h) = ([0.0; 2], [0.0; 4]);
         let mut direct = OptimalMis::new(nf, nf);
@@ -143,8 +159,7 @@ pub fn compare(integrand: &Integrand, n: usize, rounds: usize, seed: u64) -> [Me
             let (x, tech) = if j < n { (u, 0) } else { (x2, 1) };
             let (p1, p2) = (pdf1(x), pdf2(x));
             let (own, other) = if tech == 0 { (p1, p2) } else { (p2, p1) };
-            let heuristics: [Heuristic; 4] = [mis::balance, mis::power, mis::maximum, cutoff];
-            for (acc, weight) in h.iter_mut().zip(heuristics) {
+            for (acc, (_, weight, _)) in h.iter_mut().zip(HEURISTICS) {
                 *acc += w32(weight, own, other) * f(x) / (nf * own);
             }
             direct.push(f(x), p1, p2);

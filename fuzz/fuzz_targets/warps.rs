@@ -42,7 +42,19 @@ fuzz_target!(|data: &[u8]| {
         let geometry = match s {
             Sampler::SphericalRectangle { .. } => {
                 let [c, ex, ey] = geometry;
-                [c, ex, ey - ex * (ey.dot(ex) / ex.length_squared())]
+                let ey = ey - ex * (ey.dot(ex) / ex.length_squared());
+                // f32 Gram–Schmidt leaves a rounding residue along ex when ey's part along it is
+                // huge (ey = (0, −512, −8.8e12) against ex = (0, 0, 8.5e6) came back parallel to
+                // ex). Where the edges are not orthogonal to 1e-4, take an exactly orthogonal
+                // edge of ey's length instead, so the fuzzed light stays within the contract.
+                let (a, b) = (ex.as_dvec3(), ey.as_dvec3());
+                let cos = a.dot(b) / (a.length() * b.length());
+                let ey = if cos.abs() > 1e-4 && ex.is_finite() && ex != Vec3::ZERO {
+                    ex.any_orthogonal_vector() * ey.length()
+                } else {
+                    ey
+                };
+                [c, ex, ey]
             }
             _ => geometry,
         };

@@ -124,13 +124,27 @@ pub trait Lane:
 // ---------------------------------------------------------------------------------------------
 // f32
 
+/// a·b + c, fused exactly where the packet's `mul_add` is, so that both widths agree bit for bit.
+///
+/// wide fuses f32x4 and f32x8 under the same condition (`target_feature = "fma"`), so lane 0 of
+/// an f32x4 is the scalar twin of a packet FMA: one vfmadd…ss with FMA, a multiply and an add
+/// without. But with FMA that route leaves a vector-typed intrinsic in the caller's loop, which
+/// LLVM's loop vectoriser refuses ("instruction return type cannot be vectorized"): seven of
+/// nine warp loops stayed scalar in `examples/vectorize.rs`. Where std is linked, its `mul_add`
+/// is the scalar `llvm.fma.f32`, the same single rounding, which the vectoriser widens. (core has
+/// no `mul_add` on stable, so a no_std build with FMA keeps the f32x4 route.)
 #[inline(always)]
 fn fma_f32(a: f32, b: f32, c: f32) -> f32 {
-    // wide fuses f32x4 and f32x8 under the same condition, so lane 0 of an f32x4 is the scalar
-    // twin of a packet FMA (one vfmadd…ss with FMA, a multiply and an add without).
-    wide::f32x4::splat(a)
-        .mul_add(wide::f32x4::splat(b), wide::f32x4::splat(c))
-        .to_array()[0]
+    #[cfg(all(feature = "std", target_arch = "x86_64", target_feature = "fma"))]
+    {
+        a.mul_add(b, c)
+    }
+    #[cfg(not(all(feature = "std", target_arch = "x86_64", target_feature = "fma")))]
+    {
+        wide::f32x4::splat(a)
+            .mul_add(wide::f32x4::splat(b), wide::f32x4::splat(c))
+            .to_array()[0]
+    }
 }
 
 /// Correctly rounded f32 square root, encoded for the build.

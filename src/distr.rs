@@ -32,49 +32,39 @@ fn u2<R: Rng + ?Sized>(rng: &mut R) -> Vec2 {
     Vec2::new(a, unit(rng.next_u32()))
 }
 
-/// Uniform points of the unit disk, by [`warp::concentric_disk`] (pdf [`warp::uniform_disk_pdf`]).
-#[derive(Clone, Copy, Debug, Default)]
-pub struct UnitDisk;
+/// A parameterless distribution: a unit struct whose sample is `warp::$warp(u)`.
+macro_rules! unit_distribution {
+    ($(#[$doc:meta])* $name:ident -> $out:ty, $warp:ident) => {
+        $(#[$doc])*
+        #[derive(Clone, Copy, Debug, Default)]
+        pub struct $name;
 
-impl Distribution<Vec2> for UnitDisk {
-    #[inline]
-    fn sample<R: Rng + ?Sized>(&self, rng: &mut R) -> Vec2 {
-        warp::concentric_disk(u2(rng))
-    }
+        impl Distribution<$out> for $name {
+            #[inline]
+            fn sample<R: Rng + ?Sized>(&self, rng: &mut R) -> $out {
+                warp::$warp(u2(rng))
+            }
+        }
+    };
 }
 
-/// Uniform directions of the upper hemisphere, by [`warp::uniform_hemisphere`].
-#[derive(Clone, Copy, Debug, Default)]
-pub struct UniformHemisphere;
-
-impl Distribution<Vec3> for UniformHemisphere {
-    #[inline]
-    fn sample<R: Rng + ?Sized>(&self, rng: &mut R) -> Vec3 {
-        warp::uniform_hemisphere(u2(rng))
-    }
-}
-
-/// Cosine-weighted directions of the upper hemisphere, by [`warp::cosine_hemisphere`].
-#[derive(Clone, Copy, Debug, Default)]
-pub struct CosineHemisphere;
-
-impl Distribution<Vec3> for CosineHemisphere {
-    #[inline]
-    fn sample<R: Rng + ?Sized>(&self, rng: &mut R) -> Vec3 {
-        warp::cosine_hemisphere(u2(rng))
-    }
-}
-
-/// Uniform directions of the sphere, by [`warp::uniform_sphere`].
-#[derive(Clone, Copy, Debug, Default)]
-pub struct UniformSphere;
-
-impl Distribution<Vec3> for UniformSphere {
-    #[inline]
-    fn sample<R: Rng + ?Sized>(&self, rng: &mut R) -> Vec3 {
-        warp::uniform_sphere(u2(rng))
-    }
-}
+unit_distribution!(
+    /// Uniform points of the unit disk, by [`warp::concentric_disk`] (pdf
+    /// [`warp::uniform_disk_pdf`]).
+    UnitDisk -> Vec2, concentric_disk
+);
+unit_distribution!(
+    /// Uniform directions of the upper hemisphere, by [`warp::uniform_hemisphere`].
+    UniformHemisphere -> Vec3, uniform_hemisphere
+);
+unit_distribution!(
+    /// Cosine-weighted directions of the upper hemisphere, by [`warp::cosine_hemisphere`].
+    CosineHemisphere -> Vec3, cosine_hemisphere
+);
+unit_distribution!(
+    /// Uniform directions of the sphere, by [`warp::uniform_sphere`].
+    UniformSphere -> Vec3, uniform_sphere
+);
 
 /// Uniform directions of the cone 1 − cos θ ≤ h about +z, by [`warp::uniform_cone`] (whose
 /// rustdoc gives the domain of h and what bad values give).

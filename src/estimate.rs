@@ -9,7 +9,7 @@
 //!   pairwise update, so partial accumulators (threads, packet lanes) combine exactly as one long
 //!   stream would, up to rounding. [`MeanVarX8`] keeps one accumulator per packet lane.
 //! - [`roulette`] continues with probability q and weights survivors by 1/q (unbiased: the mean
-//!   is unchanged and the variance grows by (1/q − 1)·E[F²]).
+//!   is unchanged and the variance grows by (1/q − 1)·E\[F²\]).
 //! - [`split_count`] is the number of sub-samples k that minimises variance × cost for
 //!   Var = V₁ + V₂/k and cost C₁ + k·C₂.
 

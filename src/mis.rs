@@ -6,7 +6,7 @@
 //! [`balance`], [`power`] (β = 2), [`maximum`] and [`cutoff`] each take `(n_f, pdf_f, n_g, pdf_g)`
 //! and return the weight of technique f, whose contribution is a = n_f·pdf_f against
 //! b = n_g·pdf_g for g. Counts are floats, so one-sample MIS's selection probabilities fit too.
-//! Every function is generic over the lane: `f32`, [`F32x8`](crate::lane::F32x8) (also reachable
+//! Every function is generic over the lane: `f32`, [`F32x8`] (also reachable
 //! as [`mis::x8`](x8)) and `f64`, with the same operations in each, so packets equal scalars
 //! bit for bit.
 //!
@@ -51,7 +51,7 @@
 use crate::lane::{F32x8, Lane, Lane32, U32Lane, U32x8};
 use crate::warp::ONE_MINUS_EPS;
 
-/// The packet forms, on [`F32x8`](crate::lane::F32x8): the same generic functions.
+/// The packet forms, on [`F32x8`]: the same generic functions.
 pub mod x8 {
     pub use super::{OptimalMisX8 as OptimalMis, ReservoirX8 as Reservoir};
     pub use super::{balance, balance_n, cutoff, maximum, one_sample, power, power_n};

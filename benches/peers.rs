@@ -18,7 +18,10 @@ mod plain;
 
 use std::hint::black_box;
 
-use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use criterion::measurement::WallTime;
+use criterion::{
+    BenchmarkGroup, BenchmarkId, Criterion, Throughput, criterion_group, criterion_main,
+};
 use glam::{Vec2, Vec3};
 use mcsample::rng::Pcg32x8;
 use mcsample::verify::registry::{self, Sampler};
@@ -117,82 +120,72 @@ fn warps(c: &mut Criterion) {
     }
 }
 
+/// One entry of `random_points`: `point` draws one point from the generator per call, and every
+/// entry starts from the same `Pcg32::new(7, 11)`.
+fn per_call(
+    g: &mut BenchmarkGroup<'_, WallTime>,
+    out: &mut [[f32; 3]],
+    shape: &str,
+    name: &str,
+    mut point: impl FnMut(&mut Pcg32) -> [f32; 3],
+) {
+    g.bench_function(BenchmarkId::new(shape, name), |b| {
+        let mut rng = Pcg32::new(7, 11);
+        b.iter(|| {
+            for o in out.iter_mut() {
+                *o = point(&mut rng);
+            }
+            black_box(&*out);
+        })
+    });
+}
+
 /// Points from an RNG: the crate's warps fed by PCG32 against rand_distr's samplers.
 fn random_points(c: &mut Criterion) {
     let mut out = vec![[0.0f32; 3]; N];
     let mut g = c.benchmark_group("peers/random points");
     g.throughput(Throughput::Elements(N as u64));
     let to_u = |x: u32| (x >> 8) as f32 * (1.0 / 16_777_216.0);
-    g.bench_function(BenchmarkId::new("disk", "Pcg32 + concentric_disk"), |b| {
-        let mut rng = Pcg32::new(7, 11);
-        b.iter(|| {
-            for o in out.iter_mut() {
-                let u = Vec2::new(to_u(rng.next_u32()), to_u(rng.next_u32()));
-                let p = mcsample::warp::concentric_disk(u);
-                *o = [p.x, p.y, 0.0];
-            }
-            black_box(&out);
-        })
+    let u2 = |rng: &mut Pcg32| Vec2::new(to_u(rng.next_u32()), to_u(rng.next_u32()));
+    let flat = |p: Vec2| [p.x, p.y, 0.0];
+    per_call(&mut g, &mut out, "disk", "Pcg32 + concentric_disk", |rng| {
+        flat(mcsample::warp::concentric_disk(u2(rng)))
     });
     #[cfg(feature = "rand")]
-    g.bench_function(
-        BenchmarkId::new("disk", "Pcg32 sample(mcsample::distr::UnitDisk)"),
-        |b| {
-            use rand::RngExt;
-            let mut rng = Pcg32::new(7, 11);
-            b.iter(|| {
-                for o in out.iter_mut() {
-                    let p: Vec2 = rng.sample(mcsample::distr::UnitDisk);
-                    *o = [p.x, p.y, 0.0];
-                }
-                black_box(&out);
-            })
+    per_call(
+        &mut g,
+        &mut out,
+        "disk",
+        "Pcg32 sample(mcsample::distr::UnitDisk)",
+        |rng| flat(rand::RngExt::sample(rng, mcsample::distr::UnitDisk)),
+    );
+    per_call(&mut g, &mut out, "disk", "rand_distr UnitDisc", |rng| {
+        let [x, y]: [f32; 2] = UnitDisc.sample(rng);
+        [x, y, 0.0]
+    });
+    per_call(
+        &mut g,
+        &mut out,
+        "circle",
+        "Pcg32 + polar_disk at r = 1",
+        |rng| {
+            flat(mcsample::warp::polar_disk(Vec2::new(
+                1.0,
+                to_u(rng.next_u32()),
+            )))
         },
     );
-    g.bench_function(BenchmarkId::new("disk", "rand_distr UnitDisc"), |b| {
-        let mut rng = Pcg32::new(7, 11);
-        b.iter(|| {
-            for o in out.iter_mut() {
-                let [x, y]: [f32; 2] = UnitDisc.sample(&mut rng);
-                *o = [x, y, 0.0];
-            }
-            black_box(&out);
-        })
+    per_call(&mut g, &mut out, "circle", "rand_distr UnitCircle", |rng| {
+        let [x, y]: [f32; 2] = UnitCircle.sample(rng);
+        [x, y, 0.0]
     });
-    g.bench_function(
-        BenchmarkId::new("circle", "Pcg32 + polar_disk at r = 1"),
-        |b| {
-            let mut rng = Pcg32::new(7, 11);
-            b.iter(|| {
-                for o in out.iter_mut() {
-                    let u = Vec2::new(1.0, to_u(rng.next_u32()));
-                    let p = mcsample::warp::polar_disk(u);
-                    *o = [p.x, p.y, 0.0];
-                }
-                black_box(&out);
-            })
-        },
+    per_call(
+        &mut g,
+        &mut out,
+        "sphere",
+        "Pcg32 + uniform_sphere",
+        |rng| mcsample::warp::uniform_sphere(u2(rng)).to_array(),
     );
-    g.bench_function(BenchmarkId::new("circle", "rand_distr UnitCircle"), |b| {
-        let mut rng = Pcg32::new(7, 11);
-        b.iter(|| {
-            for o in out.iter_mut() {
-                let [x, y]: [f32; 2] = UnitCircle.sample(&mut rng);
-                *o = [x, y, 0.0];
-            }
-            black_box(&out);
-        })
-    });
-    g.bench_function(BenchmarkId::new("sphere", "Pcg32 + uniform_sphere"), |b| {
-        let mut rng = Pcg32::new(7, 11);
-        b.iter(|| {
-            for o in out.iter_mut() {
-                let u = Vec2::new(to_u(rng.next_u32()), to_u(rng.next_u32()));
-                *o = mcsample::warp::uniform_sphere(u).to_array();
-            }
-            black_box(&out);
-        })
-    });
     g.bench_function(
         BenchmarkId::new("sphere", "Pcg32x8 + x8 uniform_sphere"),
         |b| {
@@ -214,28 +207,18 @@ fn random_points(c: &mut Criterion) {
         },
     );
     #[cfg(feature = "rand")]
-    g.bench_function(
-        BenchmarkId::new("sphere", "Pcg32 sample(mcsample::distr::UniformSphere)"),
-        |b| {
-            use rand::RngExt;
-            let mut rng = Pcg32::new(7, 11);
-            b.iter(|| {
-                for o in out.iter_mut() {
-                    let w: Vec3 = rng.sample(mcsample::distr::UniformSphere);
-                    *o = w.to_array();
-                }
-                black_box(&out);
-            })
+    per_call(
+        &mut g,
+        &mut out,
+        "sphere",
+        "Pcg32 sample(mcsample::distr::UniformSphere)",
+        |rng| {
+            let w: Vec3 = rand::RngExt::sample(rng, mcsample::distr::UniformSphere);
+            w.to_array()
         },
     );
-    g.bench_function(BenchmarkId::new("sphere", "rand_distr UnitSphere"), |b| {
-        let mut rng = Pcg32::new(7, 11);
-        b.iter(|| {
-            for o in out.iter_mut() {
-                *o = UnitSphere.sample(&mut rng);
-            }
-            black_box(&out);
-        })
+    per_call(&mut g, &mut out, "sphere", "rand_distr UnitSphere", |rng| {
+        UnitSphere.sample(rng)
     });
     g.finish();
 }

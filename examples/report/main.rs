@@ -481,80 +481,79 @@ fn main() {
             num(cos_ns)
         )
         .unwrap();
-        s.push_str("\"warps\": [");
-        for (i, r) in rows.iter().enumerate() {
-            if i > 0 {
-                s.push_str(", ");
-            }
-            write!(
-                s,
-                "{{\"name\": \"{}\", \"scalar_ns\": {}, \"scalar_vs_plain\": {}, \"x8_ns\": {}, \"speedup\": {}, \"max_abs_err\": {}, \"max_pdf_rel_err\": {}, \"chi2_p\": {}}}",
-                esc(&r.name),
-                num(r.scalar_ns),
-                num(r.scalar_vs_plain.unwrap_or(f64::NAN)),
-                num(r.x8_ns),
-                num(r.scalar_ns / r.x8_ns),
-                num(r.max_abs_err),
-                num(r.max_pdf_rel_err),
-                num(r.chi2_p)
-            )
-            .unwrap();
-        }
-        s.push_str("], \"stability\": [");
-        for (i, (name, omega, err, rel)) in stab.iter().enumerate() {
-            if i > 0 {
-                s.push_str(", ");
-            }
-            write!(s, "{{\"light\": \"{}\", \"omega\": {}, \"max_dir_err\": {}, \"err_over_sqrt_omega\": {}}}", esc(name), num(*omega), num(*err), num(*rel)).unwrap();
-        }
-        s.push_str("], \"sequences\": [");
-        for (i, r) in seqs.iter().enumerate() {
-            if i > 0 {
-                s.push_str(", ");
-            }
-            write!(
-                s,
-                "{{\"name\": \"{}\", \"scalar_ns\": {}, \"scalar_call_ns\": {}, \"x8_ns\": {}, \"l2_star_1024\": {}, \"slope_gaussian\": {}, \"slope_disk\": {}}}",
-                esc(r.name),
-                num(r.scalar_ns),
-                num(r.scalar_call_ns),
-                num(r.x8_ns),
-                num(r.l2_star_1024),
-                num(r.slope_gaussian),
-                num(r.slope_disk)
-            )
-            .unwrap();
-        }
-        s.push_str("], \"estimators\": [");
-        for (i, r) in est.iter().enumerate() {
-            if i > 0 {
-                s.push_str(", ");
-            }
-            write!(
-                s,
-                "{{\"integrand\": \"{}\", \"estimator\": \"{}\", \"variance\": {}, \"vs_best_single\": {}}}",
-                esc(r.integrand),
-                esc(r.estimator),
-                num(r.variance),
-                num(r.vs_best_single)
-            )
-            .unwrap();
-        }
-        s.push_str("], \"mis_weights\": [");
-        for (i, w) in weights.iter().enumerate() {
-            if i > 0 {
-                s.push_str(", ");
-            }
-            write!(
-                s,
-                "{{\"name\": \"{}\", \"scalar_ns\": {}, \"x8_ns\": {}}}",
-                w.name,
-                num(w.scalar_ns),
-                num(w.x8_ns)
-            )
-            .unwrap();
-        }
-        s.push_str("]}\n");
+        // Each table is an array of flat objects, written the same way.
+        let array = |key: &str, items: Vec<String>| format!("\"{key}\": [{}]", items.join(", "));
+        let arrays = [
+            array(
+                "warps",
+                rows.iter()
+                    .map(|r| format!(
+                        "{{\"name\": \"{}\", \"scalar_ns\": {}, \"scalar_vs_plain\": {}, \"x8_ns\": {}, \"speedup\": {}, \"max_abs_err\": {}, \"max_pdf_rel_err\": {}, \"chi2_p\": {}}}",
+                        esc(&r.name),
+                        num(r.scalar_ns),
+                        num(r.scalar_vs_plain.unwrap_or(f64::NAN)),
+                        num(r.x8_ns),
+                        num(r.scalar_ns / r.x8_ns),
+                        num(r.max_abs_err),
+                        num(r.max_pdf_rel_err),
+                        num(r.chi2_p)
+                    ))
+                    .collect(),
+            ),
+            array(
+                "stability",
+                stab.iter()
+                    .map(|(name, omega, err, rel)| format!(
+                        "{{\"light\": \"{}\", \"omega\": {}, \"max_dir_err\": {}, \"err_over_sqrt_omega\": {}}}",
+                        esc(name),
+                        num(*omega),
+                        num(*err),
+                        num(*rel)
+                    ))
+                    .collect(),
+            ),
+            array(
+                "sequences",
+                seqs.iter()
+                    .map(|r| format!(
+                        "{{\"name\": \"{}\", \"scalar_ns\": {}, \"scalar_call_ns\": {}, \"x8_ns\": {}, \"l2_star_1024\": {}, \"slope_gaussian\": {}, \"slope_disk\": {}}}",
+                        esc(r.name),
+                        num(r.scalar_ns),
+                        num(r.scalar_call_ns),
+                        num(r.x8_ns),
+                        num(r.l2_star_1024),
+                        num(r.slope_gaussian),
+                        num(r.slope_disk)
+                    ))
+                    .collect(),
+            ),
+            array(
+                "estimators",
+                est.iter()
+                    .map(|r| format!(
+                        "{{\"integrand\": \"{}\", \"estimator\": \"{}\", \"variance\": {}, \"vs_best_single\": {}}}",
+                        esc(r.integrand),
+                        esc(r.estimator),
+                        num(r.variance),
+                        num(r.vs_best_single)
+                    ))
+                    .collect(),
+            ),
+            array(
+                "mis_weights",
+                weights
+                    .iter()
+                    .map(|w| format!(
+                        "{{\"name\": \"{}\", \"scalar_ns\": {}, \"x8_ns\": {}}}",
+                        w.name,
+                        num(w.scalar_ns),
+                        num(w.x8_ns)
+                    ))
+                    .collect(),
+            ),
+        ];
+        s.push_str(&arrays.join(", "));
+        s.push_str("}\n");
         std::fs::write(path, s).expect("cannot write the JSON report");
         println!("wrote {path}");
     }

@@ -40,6 +40,7 @@ use glam::{Vec2, Vec3};
 use mcsample::estimate::{self, MeanVar};
 use mcsample::frame::Frame;
 use mcsample::mis;
+use mcsample::verify::mis1d::HEURISTICS;
 use mcsample::verify::{Bits, LaneMismatch, Scalar, check_lanes};
 use mcsample::warp::{self, ONE_MINUS_EPS};
 use mcsample::x8::{F32x8, Vec2x8, Vec3x8};
@@ -1573,28 +1574,11 @@ hard_case!(
         ];
         let mut r = vec![];
         for (x, want) in cases {
-            for (name, w, w8) in [
-                (
-                    "power",
-                    mis::power(x[0], x[1], x[2], x[3]),
-                    mis::x8::power(
-                        F32x8::splat(x[0]),
-                        F32x8::splat(x[1]),
-                        F32x8::splat(x[2]),
-                        F32x8::splat(x[3]),
-                    ),
-                ),
-                (
-                    "balance",
-                    mis::balance(x[0], x[1], x[2], x[3]),
-                    mis::x8::balance(
-                        F32x8::splat(x[0]),
-                        F32x8::splat(x[1]),
-                        F32x8::splat(x[2]),
-                        F32x8::splat(x[3]),
-                    ),
-                ),
-            ] {
+            // Every heuristic (balance and power, and maximum and cutoff too), both widths.
+            for (name, f, f8) in HEURISTICS {
+                let w = f(x[0], x[1], x[2], x[3]);
+                let [a, b, c, d] = x.map(F32x8::splat);
+                let w8 = f8(a, b, c, d);
                 r.push(check(w == want, || {
                     format!("{name}{x:?} = {w}, want {want}")
                 }));
@@ -1618,14 +1602,21 @@ hard_case!(
             format!("roulette(1e-6, 0) = {w}")
         }));
         let mut rng = TestRng::new(18);
-        let mut acc = MeanVar::new();
+        let (mut acc, mut control) = (MeanVar::new(), MeanVar::new());
         for _ in 0..1_000_000 {
             let f = rng.u01() as f64; // E[f] = ½ without roulette
-            acc.push(f64::from(estimate::roulette(1e-6f32, rng.u01())) * f);
+            let w = f64::from(estimate::roulette(1e-6f32, rng.u01()));
+            acc.push(w * f);
+            // Negative control: the survivors unweighted (1 instead of 1/q), biased by q.
+            control.push(if w > 0.0 { f } else { 0.0 });
         }
         r.push(check(
             (acc.mean() - 0.5).abs() < 4.0 * acc.std_error(),
             || format!("mean {} ± {} against 0.5", acc.mean(), acc.std_error()),
+        ));
+        r.push(check(
+            (control.mean() - 0.5).abs() > 4.0 * control.std_error(),
+            || format!("the unweighted control passed: {}", control.mean()),
         ));
         collect(r)
     }

@@ -76,7 +76,8 @@ pub use spherical_rectangle::{
     spherical_rectangle_inverse, spherical_rectangle_pdf, urena_rectangle,
 };
 pub use spherical_triangle::{
-    SPHERICAL_TRIANGLE_MAX_SR, SPHERICAL_TRIANGLE_MIN_SR, arvo_triangle, spherical_triangle,
+    SPHERICAL_TRIANGLE_MAX_SR, SPHERICAL_TRIANGLE_MIN_SR, SphericalTriangle, arvo_triangle,
+    spherical_triangle,
     spherical_triangle_inverse, spherical_triangle_pdf,
 };
 pub use tent::{tent, tent_inverse, tent_pdf};

@@ -4,11 +4,13 @@
 //! Vertices are given relative to the shading point, in any winding. The solid angle Ω comes from
 //! Van Oosterom–Strackee on edge vectors, and the same Ω serves the sample and the pdf.
 
+use core::marker::PhantomData;
+
 use crate::lane::{V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::warp::common::clamp_u;
-use crate::warp::polygon::{area_pdf_solid_angle, inside_polygon, vos_solid_angle};
+use crate::warp::polygon::{EdgePlanes, area_pdf_from_cos, vos_solid_angle};
 use crate::warp::triangle::{uniform_triangle, uniform_triangle_inverse};
 
 /// Below this solid angle (sr) the triangle is sampled by area.
@@ -24,7 +26,14 @@ pub const SPHERICAL_TRIANGLE_MIN_SR: f32 = 1.0e-6;
 pub const SPHERICAL_TRIANGLE_MAX_SR: f32 = 6.0;
 
 /// Everything the sampler, pdf and inverse need, computed once per triangle.
+#[derive(Clone, Copy)]
 struct Setup<L: Math> {
+    /// The vertices as given.
+    a: V3<L>,
+    b: V3<L>,
+    c: V3<L>,
+    /// The planes through the origin and each edge, for the inside test.
+    edges: EdgePlanes<L, 3>,
     /// The plane's offset v·n, the same for every vertex v.
     h: L,
     /// Unit vertex directions.
@@ -41,6 +50,11 @@ struct Setup<L: Math> {
     /// 1 − cos and sin of the arc AB.
     one_minus_cos_c: L,
     sin_c: L,
+    /// The unit tangent at A of the arc towards C.
+    t_ac: V3<L>,
+    /// 1 − cos and sin of the arc AC, the farthest Ĉ may go.
+    one_minus_cos_b: L,
+    sin_b: L,
     /// True where the triangle can be sampled at all.
     valid: L::Mask,
     /// True where it is sampled by area.
@@ -49,7 +63,23 @@ struct Setup<L: Math> {
 
 #[inline(always)]
 fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
+    // Arvo's map sweeps Ĉ along the arc AC and then samples the arc from B to Ĉ, whose great
+    // circle is ill-conditioned when B and Ĉ are nearly opposite (its f32 error is ε over the
+    // sine of the arc: 9e-5 for a straddling triangle). Where an arc exceeds 154° (cosine below
+    // −0.9), relabel (keeping the winding) so that it is AC and B the vertex opposite it, which
+    // keeps B away from every Ĉ. The arcs of a triangle sum to less than 2π, so at most one
+    // arc is that long, and the choice is the same in every width but within an ulp of −0.9.
     let (la, lb, lc) = (a.length(), b.length(), c.length());
+    let long = |p: V3<L>, q: V3<L>, lp: L, lq: L| p.dot(q).lt(L::c(-0.9) * (lp * lq));
+    let ab_longest = long(a, b, la, lb);
+    let bc_longest = long(b, c, lb, lc) & !ab_longest;
+    let rot =
+        |x: V3<L>, y: V3<L>, z: V3<L>| V3::select(ab_longest, y, V3::select(bc_longest, z, x));
+    // Area sampling and the plane keep the vertices as given.
+    let given = (a, b, c);
+    let (a, b, c) = (rot(a, b, c), rot(b, c, a), rot(c, a, b));
+    let rotl = |x: L, y: L, z: L| L::select(ab_longest, y, L::select(bc_longest, z, x));
+    let (la, lb, lc) = (rotl(la, lb, lc), rotl(lb, lc, la), rotl(lc, la, lb));
     let (ua, ub, uc) = (
         a.scale(L::ONE / la),
         b.scale(L::ONE / lb),
@@ -57,29 +87,22 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     );
     let e1 = b - a;
     let e2 = c - a;
-    let e3 = c - b;
-    // The plane normal n = (b−a)×(c−a) = (c−b)×(a−b) = (a−c)×(b−c) and its offset h = v·n, from
-    // whichever vertex v conditions them best. Rounding in the cross product of the two edges at
-    // v costs about ε|v||e||e′| in h; up to a factor common to all three vertices that is |v|
-    // over the opposite edge. Basing at a alone loses 3e-3 of Ω for a light with one far vertex
-    // and two near ones, whose edges from a are long and nearly parallel.
-    let (ra, rb, rc) = (la / e3.length(), lb / e2.length(), lc / e1.length());
-    let at_b = rb.lt(ra) & rb.le(rc);
-    let at_c = rc.lt(ra) & rc.lt(rb);
-    let p = V3::select(at_c, e2, e1);
-    let q = V3::select(at_b | at_c, e3, e2);
-    let n = p.cross(q);
-    let h = V3::select(at_b, b, V3::select(at_c, c, a)).dot(n);
-    // Scale-free triple product a·(b×c)/(|a||b||c|).
-    let triple = h / (la * lb * lc);
-    let omega = vos_solid_angle(triple, ua, ub, uc, L::ONE, L::ONE, L::ONE);
+    // The plane, its offset and the solid angle in f64: in f32 they lose what the tilt loses
+    // (4e-3 of Ω at 1e-5 rad from edge-on) and what nearly opposite vertices lose (2e-5).
+    let ([nx, ny, nz], h, triple, den) =
+        L::triangle_terms([a.x, a.y, a.z], [b.x, b.y, b.z], [c.x, c.y, c.z]);
+    let n = V3::new(nx, ny, nz);
+    let omega = L::TWO * triple.abs().atan2(den);
 
     // The arcs c = AB and b = AC and the angle α at A come from the normals a×b and a×c of the
-    // planes through A. a × b = a × (b − a): the shorter of b and b − a leaves the smaller
-    // rounding error, so a small triangle keeps its relative precision (b − a is short) and so
-    // does a far vertex beside near ones (b is).
-    let nab = a.cross(V3::select(e1.length_squared().lt(lb * lb), e1, b));
-    let nac = a.cross(V3::select(e2.length_squared().lt(lc * lc), e2, c));
+    // planes through A, in f64: an f32 cross product of nearly parallel or nearly opposite
+    // vectors keeps few digits of its direction.
+    let wide_cross = |p: V3<L>, q: V3<L>| {
+        let [x, y, z] = L::cross_wide([p.x, p.y, p.z], [q.x, q.y, q.z]);
+        V3::new(x, y, z)
+    };
+    let nab = wide_cross(a, b);
+    let nac = wide_cross(a, c);
     let (lab, lac) = (nab.length(), nac.length());
     let (sin_c, cos_c) = (lab / (la * lb), ua.dot(ub));
     let (sin_b, cos_b) = (lac / (la * lc), ua.dot(uc));
@@ -91,13 +114,16 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     let cos_alpha = (nab.dot(nac) * inv).clamp(L::c(-1.0), L::ONE);
     let sin_alpha = (la * h.abs() * inv).min(L::ONE);
     let one_minus_cos_c = versine(sin_c, cos_c);
+    let one_minus_cos_b = versine(sin_b, cos_b);
+    // The tangent as (a × c) × a, from the plane's normal: uc − ua(ua·uc) would cancel for
+    // nearly opposite A and C and put Ĉ, and samples on the edge AC, off the edge's plane.
+    let t_ac = nac.cross(ua).normalize();
     // δ = α − Ω/2 from the half-angle excess formula at E = Ω (see `arvo`):
     // tan δ = sin α / (cos α + tan(b/2) tan(c/2)), multiplied through by sin b sin c. For an
     // obtuse α the map wants π − α instead, which f32 cannot recover from α near π.
     let sbc = sin_b * sin_c;
     let obtuse = cos_alpha.lt(L::ZERO);
-    let delta =
-        (sin_alpha * sbc).atan2(cos_alpha.mul_add(sbc, versine(sin_b, cos_b) * one_minus_cos_c));
+    let delta = (sin_alpha * sbc).atan2(cos_alpha.mul_add(sbc, one_minus_cos_b * one_minus_cos_c));
     let angle0 = L::select(obtuse, sin_alpha.atan2(-cos_alpha), delta);
 
     // Collinear vertices can leave a rounding-sized normal, and a shading point in the plane a
@@ -118,6 +144,10 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
         | !delta.is_finite()
         | sin_alpha.eq(L::ZERO);
     Setup {
+        a: given.0,
+        b: given.1,
+        c: given.2,
+        edges: EdgePlanes::new([a, b, c], h, omega),
         h,
         ua,
         ub,
@@ -128,6 +158,9 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
         obtuse,
         one_minus_cos_c,
         sin_c,
+        one_minus_cos_b,
+        sin_b,
+        t_ac,
         valid,
         by_area,
     }
@@ -167,10 +200,17 @@ fn arvo<L: Math>(s: &Setup<L>, u: V2<L>) -> V3<L> {
     let (h2, _) = (s.angle0 + rest).sin_cos();
     let x = s.one_minus_cos_c * h2.max(L::ZERO);
     let y = s.sin_c * h1;
+    // Ĉ must not pass C: near u₀ = 1 rounding can carry b′ a few 1e-6 beyond the arc b, and the
+    // sample with it outside the edge BC. tan(b′/2) = y/x against tan(b/2) = (1 − cos b)/sin b.
+    let over = (y * s.sin_b).gt(x * s.one_minus_cos_b);
+    let (x, y) = (
+        L::select(over, s.sin_b, x),
+        L::select(over, s.one_minus_cos_b, y),
+    );
     let r = L::ONE / x.mul_add(x, y * y);
     let cos_b = ((x - y) * (x + y) * r).clamp(L::c(-1.0), L::ONE);
     let sin_b = L::TWO * x * y * r;
-    let c_hat = s.ua.scale(cos_b) + ortho(s.uc, s.ua).scale(sin_b);
+    let c_hat = s.ua.scale(cos_b) + s.t_ac.scale(sin_b);
     // 1 − Ĉ·B as |Ĉ − B|²/2, so that z keeps its precision when Ĉ is close to B.
     let d = c_hat - s.ub;
     let one_minus_z = u.y * (L::HALF * d.dot(d));
@@ -202,16 +242,146 @@ pub fn arvo_triangle<P: Point2>(u: P, a: P::Vec3, b: P::Vec3, c: P::Vec3) -> P::
     Point3::from_lanes(arvo(&s, clamp_u(u.to_lanes())))
 }
 
-/// A direction towards triangle (a, b, c), vertices relative to the shading point in either
-/// winding, and its pdf per steradian ([`spherical_triangle_pdf`] gives the same number).
+/// A triangle set up for sampling at one shading point: [`spherical_triangle`],
+/// [`spherical_triangle_pdf`] and [`spherical_triangle_inverse`] with the set-up (solid angle,
+/// arcs, edge planes) paid once, for a caller that takes several samples or evaluates several
+/// pdfs at one point. The free functions are this type, built and used once.
 ///
-/// Arvo's map (1995), uniform in solid angle with pdf 1/Ω, Ω by Van Oosterom–Strackee on edge
-/// vectors. Below [`SPHERICAL_TRIANGLE_MIN_SR`] or above [`SPHERICAL_TRIANGLE_MAX_SR`] it
-/// samples by area instead and returns the exact converted pdf.
+/// `P` is the width: `SphericalTriangle<Vec3>`, `SphericalTriangle<Vec3x8>` (eight triangles,
+/// lane by lane) or `SphericalTriangle<DVec3>`.
+///
+/// ```
+/// use glam::{Vec2, Vec3};
+/// use mcsample::warp::SphericalTriangle;
+///
+/// let tri = SphericalTriangle::new(Vec3::new(-1.0, -1.0, 2.0), Vec3::new(1.0, -1.0, 2.0), Vec3::Z);
+/// let (w, pdf) = tri.sample(Vec2::new(0.3, 0.8));
+/// assert!(pdf > 0.0 && tri.pdf(w) == pdf);
+/// assert!((1.0 / pdf - tri.solid_angle()).abs() < 1e-6);
+/// ```
+#[derive(Clone, Copy)]
+pub struct SphericalTriangle<P: Point3> {
+    s: Setup<P::Lane>,
+    width: PhantomData<P>,
+}
+
+impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
+    /// The triangle with vertices `a`, `b`, `c` relative to the shading point, in either winding.
+    #[inline]
+    pub fn new(a: P, b: P, c: P) -> Self {
+        Self {
+            s: setup(a.to_lanes(), b.to_lanes(), c.to_lanes()),
+            width: PhantomData,
+        }
+    }
+
+    /// The solid angle Ω (Van Oosterom–Strackee, the plane offset in f64), or 0 where the
+    /// triangle is degenerate.
+    #[inline]
+    pub fn solid_angle(&self) -> L {
+        L::select(self.s.valid, self.s.omega, L::ZERO)
+    }
+
+    /// True (lane by lane) where the triangle is sampled by area rather than spherically.
+    #[inline]
+    pub fn by_area(&self) -> L::Mask {
+        self.s.by_area
+    }
+
+    /// The plane's offset h = v·n and its normal n = (b − a) × (c − a), unnormalised: the
+    /// distance along unit direction w to the plane is h / (w·n).
+    #[inline]
+    pub fn plane(&self) -> (L, P) {
+        (self.s.h, P::from_lanes(self.s.n))
+    }
+
+    /// See [`spherical_triangle`].
+    #[inline]
+    pub fn sample(&self, u: P::Vec2) -> (P, L) {
+        let s = &self.s;
+        let u = clamp_u(u.to_lanes());
+        let w_sph = arvo(s, u);
+        let bary = uniform_triangle(u);
+        let p = s.a.scale(bary.x) + s.b.scale(bary.y) + s.c.scale(bary.z);
+        let w = V3::select(s.by_area, p.normalize(), w_sph);
+        // The pdf is the pdf function's, at the very direction returned: equal by construction.
+        let pdf = self.pdf_lanes(w);
+        let w = V3::select(pdf.gt(L::ZERO), w, V3::new(L::ZERO, L::ZERO, L::ONE));
+        (P::from_lanes(w), pdf)
+    }
+
+    /// See [`spherical_triangle_pdf`].
+    #[inline]
+    pub fn pdf(&self, w: P) -> L {
+        self.pdf_lanes(w.to_lanes())
+    }
+
+    #[inline(always)]
+    fn pdf_lanes(&self, w: V3<L>) -> L {
+        let s = &self.s;
+        let sph = L::ONE / s.omega;
+        // w·n from the vertices in f64: with n rounded to f32 first, the pdf of a direction
+        // 1e-5 rad from the plane would be 5 % off.
+        let (a, b, c) = (s.a, s.b, s.c);
+        let wn = L::plane_dot(
+            [w.x, w.y, w.z],
+            [a.x, a.y, a.z],
+            [b.x, b.y, b.z],
+            [c.x, c.y, c.z],
+        );
+        let area = area_pdf_from_cos(wn, s.h, L::TWO);
+        let pdf = L::select(s.by_area, area, sph);
+        L::select(s.valid & s.edges.contains(w), pdf, L::ZERO)
+    }
+
+    /// See [`spherical_triangle_inverse`].
+    #[inline]
+    pub fn inverse(&self, w: P) -> P::Vec2 {
+        let s = &self.s;
+        let w = w.to_lanes();
+        let (bary, _) = barycentrics(w, s.a, s.b, s.c, s.n);
+        let u_area = uniform_triangle_inverse(bary);
+
+        let plane_bw = s.ub.cross(w);
+        let plane_ac = s.ua.cross(s.uc);
+        let c_hat = plane_bw.cross(plane_ac);
+        let c_hat = c_hat.scale(L::ONE / c_hat.length());
+        // The two planes meet in ±Ĉ: keep the one on the arc from A to C.
+        let c_hat = c_hat.scale(L::ONE.copysign(c_hat.dot(s.ua + s.uc)));
+        let dw = w - s.ub;
+        let dc = c_hat - s.ub;
+        let u1 = dw.dot(dw) / dc.dot(dc);
+        let e1 = s.ub - s.ua;
+        let e2 = c_hat - s.ua;
+        let sub = vos_solid_angle(
+            s.ua.dot(e1.cross(e2)),
+            s.ua,
+            s.ub,
+            c_hat,
+            L::ONE,
+            L::ONE,
+            L::ONE,
+        );
+        let u0 = sub / s.omega;
+        // w = B leaves Ĉ undefined; any u₀ with u₁ = 0 maps there.
+        let at_b = dw.dot(dw).eq(L::ZERO);
+        let u_sph = V2::new(L::select(at_b, L::ZERO, u0), L::select(at_b, L::ZERO, u1));
+        let u = clamp_u(V2::select(s.by_area, u_area, u_sph));
+        Point2::from_lanes(u.nan_where(w.any_nan()))
+    }
+}
+
+/// A direction towards triangle (a, b, c), vertices relative to the shading point in either
+/// winding, and its pdf per steradian ([`spherical_triangle_pdf`] gives the same number, bit for
+/// bit, at the returned direction). [`SphericalTriangle`] is the same with the set-up paid once.
+///
+/// Arvo's map (1995), uniform in solid angle with pdf 1/Ω, Ω by Van Oosterom–Strackee with the
+/// plane offset in f64. Below [`SPHERICAL_TRIANGLE_MIN_SR`] or above
+/// [`SPHERICAL_TRIANGLE_MAX_SR`] it samples by area instead and returns the exact converted pdf.
 ///
 /// u is clamped to [0, 1]². Degenerate triangles (coincident or collinear vertices, the shading
-/// point within 1e-6 rad of the triangle's plane, non-finite input) give pdf 0 and direction +z.
-/// NaN in u gives pdf 0.
+/// point within 1e-6 rad of the triangle's plane, non-finite input) give pdf 0 and direction +z,
+/// and so does NaN in u.
 #[inline]
 pub fn spherical_triangle<P: Point2<Lane = L>, L: Math>(
     u: P,
@@ -219,38 +389,16 @@ pub fn spherical_triangle<P: Point2<Lane = L>, L: Math>(
     b: P::Vec3,
     c: P::Vec3,
 ) -> (P::Vec3, L) {
-    let u = clamp_u(u.to_lanes());
-    let (a, b, c) = (a.to_lanes(), b.to_lanes(), c.to_lanes());
-    let s = setup(a, b, c);
-    let w_sph = arvo(&s, u);
-    let bary = uniform_triangle(u);
-    let p = a.scale(bary.x) + b.scale(bary.y) + c.scale(bary.z);
-    let w_area = p.normalize();
-    let w = V3::select(s.by_area, w_area, w_sph);
-    let pdf = pdf_of(&s, w);
-    let ok = s.valid & w.dot(w).is_finite();
-    let w = V3::select(ok, w, V3::new(L::ZERO, L::ZERO, L::ONE));
-    (Point3::from_lanes(w), L::select(ok, pdf, L::ZERO))
+    SphericalTriangle::new(a, b, c).sample(u)
 }
 
-/// The pdf of direction `w` given a set-up triangle, without the inside test: 1/Ω when sampled
-/// spherically, the converted area pdf otherwise.
-#[inline(always)]
-fn pdf_of<L: Math>(s: &Setup<L>, w: V3<L>) -> L {
-    let sph = L::ONE / s.omega;
-    let area = area_pdf_solid_angle(w, s.h, s.n, L::TWO);
-    L::select(s.by_area, area, sph)
-}
-
-/// pdf per steradian that [`spherical_triangle`] returns unit direction `w`: the same formula,
-/// hence the same number, as the sampler's; 0 outside the triangle, for degenerate triangles
-/// and for NaN.
+/// pdf per steradian that [`spherical_triangle`] returns unit direction `w`: 1/Ω, or the
+/// converted area pdf where it samples by area; 0 outside the triangle, for degenerate triangles
+/// and for NaN. "Outside" is beyond a slack of 4.8e-7 + 7.6e-6·√Ω rad, which covers the f32
+/// rounding of the map, so that every sample keeps its pdf.
 #[inline]
 pub fn spherical_triangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P, c: P) -> L {
-    let (w, a, b, c) = (w.to_lanes(), a.to_lanes(), b.to_lanes(), c.to_lanes());
-    let s = setup(a, b, c);
-    let inside = inside_polygon(w, [a, b, c], [b - a, c - b, a - c], s.h);
-    L::select(s.valid & inside, pdf_of(&s, w), L::ZERO)
+    SphericalTriangle::new(a, b, c).pdf(w)
 }
 
 /// Inverse of [`spherical_triangle`]: the u that maps to unit direction `w`, clamped to [0, 1]².
@@ -260,34 +408,5 @@ pub fn spherical_triangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P, c:
 /// low-distortion triangle inverse of w's barycentrics. NaN gives NaN.
 #[inline]
 pub fn spherical_triangle_inverse<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P, c: P) -> P::Vec2 {
-    let (w, a, b, c) = (w.to_lanes(), a.to_lanes(), b.to_lanes(), c.to_lanes());
-    let s = setup(a, b, c);
-    let (bary, _) = barycentrics(w, a, b, c, s.n);
-    let u_area = uniform_triangle_inverse(bary);
-
-    let plane_bw = s.ub.cross(w);
-    let plane_ac = s.ua.cross(s.uc);
-    let c_hat = plane_bw.cross(plane_ac);
-    let c_hat = c_hat.scale(L::ONE / c_hat.length());
-    // The two planes meet in ±Ĉ: keep the one on the arc from A to C.
-    let c_hat = c_hat.scale(L::ONE.copysign(c_hat.dot(s.ua + s.uc)));
-    let dw = w - s.ub;
-    let dc = c_hat - s.ub;
-    let u1 = dw.dot(dw) / dc.dot(dc);
-    let e1 = s.ub - s.ua;
-    let e2 = c_hat - s.ua;
-    let sub = vos_solid_angle(
-        s.ua.dot(e1.cross(e2)),
-        s.ua,
-        s.ub,
-        c_hat,
-        L::ONE,
-        L::ONE,
-        L::ONE,
-    );
-    let u0 = sub / s.omega;
-    // w = B leaves Ĉ undefined; any u₀ with u₁ = 0 maps there.
-    let at_b = dw.dot(dw).eq(L::ZERO);
-    let u_sph = V2::new(L::select(at_b, L::ZERO, u0), L::select(at_b, L::ZERO, u1));
-    Point2::from_lanes(clamp_u(V2::select(s.by_area, u_area, u_sph)).nan_where(w.any_nan()))
+    SphericalTriangle::new(a, b, c).inverse(w)
 }

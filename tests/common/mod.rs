@@ -460,9 +460,18 @@ pub fn triangle_solid_angle_vos(a: D3, b: D3, c: D3) -> f64 {
     2.0 * triple.abs().atan2(den)
 }
 
-/// Arvo's map: the unit direction and pdf 1/Ω (Ω by Girard).
+/// Arvo's map: the unit direction and pdf 1/Ω (Ω by Girard). Arvo's labels are free; like the
+/// crate, this puts an arc longer than 154° (cosine below −0.9) at AC, with B opposite it, so
+/// that the arc from B to Ĉ never joins nearly opposite points.
 pub fn spherical_triangle(u: D2, a: D3, b: D3, c: D3) -> (D3, f64) {
     let (a, b, c) = (normalize(a), normalize(b), normalize(c));
+    let (a, b, c) = if dot(a, b) < -0.9 {
+        (b, c, a)
+    } else if dot(b, c) < -0.9 {
+        (c, a, b)
+    } else {
+        (a, b, c)
+    };
     let alpha = vertex_angle(a, b, c);
     let beta = vertex_angle(b, c, a);
     let gamma = vertex_angle(c, a, b);

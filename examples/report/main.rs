@@ -201,13 +201,8 @@ fn stability(quick: bool) -> Vec<(String, f64, f64, f64)> {
             })
             .collect();
         let (a, b, c) = (tri[0], tri[1], tri[2]);
-        let omega = 1.0
-            / warp::spherical_triangle_pdf(
-                warp::arvo_triangle(V2::new(0.3, 0.3), d3(a), d3(b), d3(c)),
-                d3(a),
-                d3(b),
-                d3(c),
-            );
+        // Ω from the f64 set-up: 1/pdf would be the area pdf outside the spherical range.
+        let omega = warp::SphericalTriangle::new(d3(a), d3(b), d3(c)).solid_angle();
         let mut worst = 0.0f64;
         for &u in &pts {
             let w32 = warp::arvo_triangle(u, a, b, c);
@@ -222,31 +217,43 @@ fn stability(quick: bool) -> Vec<(String, f64, f64, f64)> {
             worst / omega.sqrt(),
         ));
 
-        let (corner, ex, ey) = (
+        // The rectangle: the facing square, and a 2:1 rectangle of the same area tilted 60°
+        // from facing, seen 40° off its normal. Ω from the f64 set-up (exact VOS, whatever the
+        // sampling mode).
+        let tilted = {
+            let (a, b) = (s * std::f32::consts::SQRT_2, s / std::f32::consts::SQRT_2);
+            let (c60, s60) = (0.5f32, 0.75f32.sqrt());
+            let ex = Vec3::new(a, 0.0, 0.0);
+            let ey = Vec3::new(0.0, b * c60, b * s60);
+            let centre = Vec3::new(0.64, 0.2, 0.74).normalize();
+            (centre - ex * 0.5 - ey * 0.5, ex, ey)
+        };
+        let square = (
             Vec3::new(-s / 2.0, -s / 2.0, 1.0),
             Vec3::new(s, 0.0, 0.0),
             Vec3::new(0.0, s, 0.0),
         );
-        let omega =
-            1.0 / warp::spherical_rectangle_pdf(V3::new(0.0, 0.0, 1.0), d3(corner), d3(ex), d3(ey));
-        let mut worst = 0.0f64;
-        for &u in &pts {
-            let p32 = warp::urena_rectangle(u, corner, ex, ey);
-            let p64 = DVec3::from(warp::urena_rectangle(
-                d2(u.as_dvec2()),
-                d3(corner),
-                d3(ex),
-                d3(ey),
+        for (label, (corner, ex, ey)) in [("rectangle", square), ("tilted rect", tilted)] {
+            let omega = warp::SphericalRectangle::new(d3(corner), d3(ex), d3(ey)).solid_angle();
+            let mut worst = 0.0f64;
+            for &u in &pts {
+                let p32 = warp::urena_rectangle(u, corner, ex, ey);
+                let p64 = DVec3::from(warp::urena_rectangle(
+                    d2(u.as_dvec2()),
+                    d3(corner),
+                    d3(ex),
+                    d3(ey),
+                ));
+                let e = (p32.as_dvec3().normalize() - p64.normalize()).length();
+                worst = if worse(e, worst) { e } else { worst };
+            }
+            rows.push((
+                format!("{label} s={s}"),
+                omega,
+                worst,
+                worst / omega.sqrt(),
             ));
-            let e = (p32.as_dvec3().normalize() - p64.normalize()).length();
-            worst = if worse(e, worst) { e } else { worst };
         }
-        rows.push((
-            format!("rectangle s={s}"),
-            omega,
-            worst,
-            worst / omega.sqrt(),
-        ));
     }
     rows
 }

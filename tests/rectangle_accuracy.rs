@@ -571,12 +571,12 @@ fn packets_match_scalars_bit_for_bit() {
     }
 }
 
-/// The inverse undoes the sampler, to within what the f32 point itself determines: for each
-/// sample p, with c the change of u when p moves by its own rounding δ (δ = ε|p|, or
-/// ε·(|corner| + |ex| + |ey|) by area; c = δ·|row i of J⁺| for the map's Jacobian J), both the f32 inverse
-/// against the f64 inverse of the same p and the f64 inverse against u are within 8c + 2e-6. (Near the
-/// horizon of a rectangle seen almost edge-on, c reaches 0.1: the planes x = const all contain
-/// the y axis, so there a rounding-sized move of p is a large move in u₀.)
+/// The inverse undoes the sampler, to within what the f32 point itself determines: for each sample
+/// p, with c the change of u when p moves by its own rounding δ (δ = ε|p|, or ε·(|corner| + |ex| +
+/// |ey|) by area; c = δ·|row i of J⁺| for the map's Jacobian J), both the f32 inverse against the
+/// f64 inverse of the same p and the f64 inverse against u are within 8c + 2e-6. (Near the horizon
+/// of a rectangle seen almost edge-on, c reaches 0.1: the planes x = const all contain the y axis,
+/// so there a rounding-sized move of p is a large move in u₀.)
 #[test]
 fn inverse_undoes_the_sampler() {
     let mut g = Rng(6);
@@ -816,4 +816,39 @@ fn print_timings() {
             .map(|(r, &u)| black_box(r).sample(u).1.to_array()[0])
             .sum()
     });
+}
+
+/// The map depends only on ratios, and the set-up works at a power-of-two scale of its own: a
+/// rectangle scaled by 2^k (k from −50 to 50, coordinates from 1e-17 to 1e19) gives the same
+/// pdf and the same point scaled by 2^k, bit for bit. (Unscaled, squares and cubes of the
+/// coordinates overflowed from about 1e9 and gave wrong directions with pdf > 0.)
+#[test]
+fn power_of_two_scaling_changes_nothing_but_the_scale() {
+    let mut g = Rng(11);
+    let mut n = 0;
+    for i in 0..3000 {
+        let (c, ex, ey) = random_rectangle(&mut g, KINDS[i % KINDS.len()]);
+        let base = SphericalRectangle::new(c, ex, ey);
+        if base.solid_angle() <= 0.0 {
+            continue;
+        }
+        let u = Vec2::new(g.u01(), g.u01());
+        let (p0, pdf0) = base.sample(u);
+        for e in (-50..=50).step_by(10) {
+            let k = 2f32.powi(e);
+            let r = SphericalRectangle::new(c * k, ex * k, ey * k);
+            let (p, pdf) = r.sample(u);
+            assert!(
+                pdf.to_bits() == pdf0.to_bits()
+                    && p.to_array().map(f32::to_bits) == (p0 * k).to_array().map(f32::to_bits)
+                    && r.by_area() == base.by_area()
+                    && r.solid_angle() == base.solid_angle(),
+                "2^{e}: {:?} u={u:?}: {p:?} {pdf} vs {:?} {pdf0}",
+                (c, ex, ey),
+                p0 * k
+            );
+            n += 1;
+        }
+    }
+    assert!(n > 20_000, "{n}");
 }

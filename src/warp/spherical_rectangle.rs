@@ -45,8 +45,11 @@
 //! view makes a small part of |corner|; the far edges x1, y1, which for a far corner and a near
 //! edge are small differences), and a sample is corner + s·ex + t·ey where the corner is not much
 //! farther than the sample, else foot + x·x̂ + y·ŷ, so that its rounding stays a few ulp of its
-//! own length. Measured against its f64 instance, the f32 map's direction error is at most
-//! 5.7e-7 on 2.4e5 random rectangles from 2π down to 1e-9 sr (`tests/rectangle_accuracy.rs`).
+//! own length. The set-up first scales the geometry by a power of two that brings it near unit
+//! size, which is exact and changes nothing but keeps squares and cubes of coordinates from
+//! 1e-17 to 1e19 in range. Measured against its f64 instance, the f32 map's direction error is
+//! at most 5.7e-7 on 2.4e5 random rectangles from 2π down to 1e-9 sr
+//! (`tests/rectangle_accuracy.rs`).
 
 use core::marker::PhantomData;
 
@@ -58,16 +61,16 @@ use crate::warp::polygon::area_pdf_solid_angle;
 
 /// Below this solid angle (sr) the rectangle is sampled by area.
 ///
-/// The map's f32 direction error against its f64 instance is at most 5.7e-7 from 2π down to
-/// 1e-9 sr, measured on 2.4e5 random rectangles of every kind (anywhere above the horizon, far
-/// and small, grazing, straddling the foot of the perpendicular, larger than their distance,
-/// nearly edge-on; `tests/rectangle_accuracy.rs`, 80 u each), and at most 2.8e-7 on the
-/// report's stability rows (a facing square and a tilted 2:1 rectangle from 1e-9 to 6.3 sr).
-/// (The old Σγ − 2π form: 2e-6 at 0.01 sr, 9e-6 at 1e-3 sr and 4e-4 at 1e-6 sr on the facing
-/// square, up to 4e-2 on random grazing rectangles, which is why this was 0.02.) So, as for the triangle, the
-/// threshold is set by the f32 direction grid, not by the algorithm: below 1e-6 sr (0.06°
-/// across) a unit f32 vector resolves only 1e-4 of the light, and area sampling there is exact
-/// and cheaper, its pdf uniform in solid angle to about the light's angular size (1e-3).
+/// The map's f32 direction error against its f64 instance is at most 5.7e-7 from 2π down to 1e-9
+/// sr, measured on 2.4e5 random rectangles of every kind (anywhere above the horizon, far and
+/// small, grazing, straddling the foot of the perpendicular, larger than their distance, nearly
+/// edge-on; `tests/rectangle_accuracy.rs`, 80 u each), and at most 2.8e-7 on the report's stability
+/// rows (a facing square and a tilted 2:1 rectangle from 1e-9 to 6.3 sr). (The old Σγ − 2π form:
+/// 2e-6 at 0.01 sr, 9e-6 at 1e-3 sr and 4e-4 at 1e-6 sr on the facing square, up to 4e-2 on random
+/// grazing rectangles, which is why this was 0.02.) So, as for the triangle, the threshold is set
+/// by the f32 direction grid, not by the algorithm: below 1e-6 sr (0.06° across) a unit f32 vector
+/// resolves only 1e-4 of the light, and area sampling there is exact and cheaper, its pdf uniform
+/// in solid angle to about the light's angular size (1e-3).
 pub const SPHERICAL_RECTANGLE_MIN_SR: f32 = 1.0e-6;
 /// Above this solid angle (sr) the rectangle would be sampled by area too: 2π, which no
 /// rectangle reaches. The map keeps its accuracy (3.5e-7 measured in [6, 2π), for rectangles up
@@ -90,6 +93,12 @@ const INSIDE_SLACK: f64 = 8.0 * f32::EPSILON as f64;
 /// Everything the sampler, pdf and inverse need, computed once per rectangle.
 #[derive(Clone, Copy)]
 struct Setup<L: Math> {
+    /// The corner as given, returned for a dropped sample.
+    given_corner: V3<L>,
+    /// The power of two the geometry is scaled by (see `pow2_scale`), and its inverse.
+    scale: L,
+    unscale: L,
+    /// The scaled geometry, which everything below describes.
     corner: V3<L>,
     ex: V3<L>,
     ey: V3<L>,
@@ -118,9 +127,10 @@ struct Setup<L: Math> {
     cos_psi1: L,
     /// The solid angle by Van Oosterom–Strackee.
     omega: L,
-    /// ex × ey and corner·(ex × ey), for the area pdf.
-    n: V3<L>,
-    h: L,
+    /// For the area pdf: the unit normal, the signed distance corner·n̂ and 1/area.
+    n_unit: V3<L>,
+    h_unit: L,
+    inv_area: L,
     /// Unit normals of the planes through the shading point and each edge, pointing inwards.
     planes: [V3<L>; 4],
     /// −INSIDE_SLACK·R/d.
@@ -175,9 +185,9 @@ fn rr_minus_yy<L: Math>(ra: L, rb: L, ya: L, yb: L, rho2: L) -> L {
     rr_plus_yy(ra, rb, ya, -yb, rho2)
 }
 
-/// The column at x: its corners' distances, and the two parts into which the plane at x cuts
-/// half the lune, g = |G(x)| the solid angle of [0, x] × [y0, y1] (between the foot and x) and
-/// t that of the part beyond, g + t = β. Each is the spherical triangle's solid angle in half-angle form,
+/// The column at x: its corners' distances, and the two parts into which the plane at x cuts half
+/// the lune, g = |G(x)| the solid angle of [0, x] × [y0, y1] (between the foot and x) and t that of
+/// the part beyond, g + t = β. Each is the spherical triangle's solid angle in half-angle form,
 ///
 /// - tan(t/2) = d·dy / (ra·rb + y0·y1 + ρ² + |x|(ra + rb)) (Van Oosterom–Strackee on the
 ///   triangle with a vertex at ±x̂),
@@ -206,7 +216,10 @@ fn column<L: Math>(x: L, s: &Strip<L>) -> Column<L> {
     let num_g = ax * d * (k / rr);
     let x2 = ax * ax;
     let same = x2.mul_add(yy / rr, rho2);
-    let opposite = (x2 * d2).mul_add(y0.mul_add(y0, y1.mul_add(y1, d2)) / ((rr - yy) * rr), d2);
+    let opposite = x2.mul_add(
+        d2 * (y0.mul_add(y0, y1.mul_add(y1, d2)) / (rr - yy) / rr),
+        d2,
+    );
     let den_g = d2.mul_add((ra * rb) / rr, L::select(yy.ge(L::ZERO), same, opposite));
     let g_smaller = (num_g / den_g).le(num_t / den_t);
     let v = L::TWO * L::select(g_smaller, num_g, num_t).atan2(L::select(g_smaller, den_g, den_t));
@@ -322,8 +335,33 @@ fn shifted_dot<L: Math>(p: V3<L>, e: V3<L>) -> L {
     L::dot_wide([x, y, z], e) + L::dot_wide([xl, yl, zl], e)
 }
 
+/// A power of two that brings a magnitude m into [2⁻⁸, 2⁸] (for m from 2⁻¹²⁰ to 2¹²⁰; 1 for
+/// NaN): multiplying by it is exact, so a problem that depends only on ratios (directions, solid
+/// angles) is solved bit for bit as it would be at m's own scale, but with squares and cubes far
+/// from overflow and underflow.
+#[inline(always)]
+fn pow2_scale<L: Math>(m: L) -> L {
+    let mut scale = L::ONE;
+    let mut m = m;
+    for e in [64, 32, 16, 8] {
+        let (big, small) = (L::c(2f64.powi(e)), L::c(2f64.powi(-e)));
+        let down = m.gt(big);
+        let up = m.lt(small);
+        let k = L::select(down, small, L::select(up, big, L::ONE));
+        scale = scale * k;
+        m = m * k;
+    }
+    scale
+}
+
 #[inline(always)]
 fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
+    // The geometry at a scale where its squares and cubes cannot overflow or underflow (the
+    // samples are scaled back; directions, Ω and pdfs do not depend on the scale).
+    let given_corner = corner;
+    let amax = |v: V3<L>| v.x.abs().max(v.y.abs()).max(v.z.abs());
+    let scale = pow2_scale(amax(corner).max(amax(ex)).max(amax(ey)));
+    let (corner, ex, ey) = (corner.scale(scale), ex.scale(scale), ey.scale(scale));
     let exl = ex.length();
     let eyl = ey.length();
     let xh = ex.scale(L::ONE / exl);
@@ -420,7 +458,11 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
     let by_area = omega.lt(L::c(SPHERICAL_RECTANGLE_MIN_SR as f64))
         | omega.gt(L::c(SPHERICAL_RECTANGLE_MAX_SR as f64))
         | !map_ok;
+    let area = nn.sqrt();
     Setup {
+        given_corner,
+        scale,
+        unscale: L::ONE / scale,
         corner,
         ex,
         ey,
@@ -440,8 +482,9 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
         sin_psi1: d / dist1,
         cos_psi1: y1 / dist1,
         omega,
-        n,
-        h,
+        n_unit: n.scale(L::ONE / area),
+        h_unit: h / area,
+        inv_area: L::ONE / area,
         planes,
         slack,
         valid,
@@ -605,10 +648,11 @@ impl<P: Point3<Lane = L>, L: Math> SphericalRectangle<P> {
         let u = clamp_u(u.to_lanes());
         let p_sph = map_point(s, u);
         let p_area = s.corner + s.ex.scale(u.x) + s.ey.scale(u.y);
-        let p = V3::select(s.by_area, p_area, p_sph);
+        // Scaling back is exact: p_area is corner + s·ex + t·ey as given, bit for bit.
+        let p = V3::select(s.by_area, p_area, p_sph).scale(s.unscale);
         // The pdf is the pdf function's, at the very point returned: equal by construction.
         let pdf = self.pdf_lanes(p);
-        let p = V3::select(pdf.gt(L::ZERO), p, s.corner);
+        let p = V3::select(pdf.gt(L::ZERO), p, s.given_corner);
         (P::from_lanes(p), pdf)
     }
 
@@ -627,8 +671,8 @@ impl<P: Point3<Lane = L>, L: Math> SphericalRectangle<P> {
         for m in s.planes {
             inside = inside & w.dot(m).ge(s.slack);
         }
-        // The area pdf d²/(|cos θ|·A) = h²/|w·n|³ for unit w (w·n in f64).
-        let area = area_pdf_solid_angle(w, s.h, s.n, L::ONE);
+        // The area pdf, t²/(|cos θ|·A) = d²/(|w·n̂|³·A) for unit w (w·n̂ in f64).
+        let area = area_pdf_solid_angle(w, s.h_unit, s.n_unit, s.inv_area);
         let pdf = L::select(s.by_area, area, L::ONE / s.omega);
         L::select(s.valid & inside, pdf, L::ZERO)
     }
@@ -637,7 +681,7 @@ impl<P: Point3<Lane = L>, L: Math> SphericalRectangle<P> {
     #[inline]
     pub fn inverse(&self, p: P) -> P::Vec2 {
         let s = &self.s;
-        let p = p.to_lanes();
+        let p = p.to_lanes().scale(s.scale);
         let d = p - s.corner;
         let st = V2::new(d.dot(s.ex) / s.ex.dot(s.ex), d.dot(s.ey) / s.ey.dot(s.ey));
         // The oblique coordinates of p − foot, as in `setup`.
@@ -692,7 +736,7 @@ impl<P: Point3<Lane = L>, L: Math> SphericalRectangle<P> {
 #[inline]
 pub fn urena_rectangle<P: Point2>(u: P, corner: P::Vec3, ex: P::Vec3, ey: P::Vec3) -> P::Vec3 {
     let s = setup(corner.to_lanes(), ex.to_lanes(), ey.to_lanes());
-    Point3::from_lanes(map_point(&s, clamp_u(u.to_lanes())))
+    Point3::from_lanes(map_point(&s, clamp_u(u.to_lanes())).scale(s.unscale))
 }
 
 /// A point on the rectangle corner + s·ex + t·ey (relative to the shading point; ex ⟂ ey) and its

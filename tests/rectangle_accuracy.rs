@@ -796,6 +796,22 @@ fn print_timings() {
         .chunks(8)
         .map(|c| Vec2x8::from(<[Vec2; 8]>::try_from(c).unwrap()))
         .collect();
+    time("old map (set-up + map), x8", &|| {
+        r8.iter()
+            .zip(&u8)
+            .map(|(r, &u)| old_map(u, black_box(r.0), r.1, r.2).x.to_array()[0])
+            .sum()
+    });
+    time("urena_rectangle (set-up + map), x8", &|| {
+        r8.iter()
+            .zip(&u8)
+            .map(|(r, &u)| {
+                warp::x8::urena_rectangle(u, black_box(r.0), r.1, r.2)
+                    .x
+                    .to_array()[0]
+            })
+            .sum()
+    });
     time("spherical_rectangle, x8", &|| {
         r8.iter()
             .zip(&u8)

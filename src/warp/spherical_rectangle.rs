@@ -148,9 +148,10 @@ struct Strip<L> {
     y1: L,
     dy: L,
     d: L,
-    /// √(d² + y0²) and √(d² + y1²): the distances to the lines of the edges y = y0, y = y1.
-    r0: L,
-    r1: L,
+    /// r0·r1 and its reciprocal, r0 = √(d² + y0²) and r1 = √(d² + y1²) the distances to the
+    /// lines of the edges y = y0, y = y1.
+    rr: L,
+    inv_rr: L,
     /// β, the dihedral angle between the planes of those edges: the lune has area 2β, β on
     /// either side of the foot.
     beta: L,
@@ -208,20 +209,23 @@ fn column<L: Math>(x: L, s: &Strip<L>) -> Column<L> {
     let num_t = d * s.dy;
     let den_t = ax.mul_add(ra + rb, rr_plus_yy(ra, rb, y0, y1, rho2) + rho2);
     // K = dy·(ρ² + ra·rb − y0·y1)/(ra + rb); numerator and denominator of tan(g/2) divided by
-    // r0·r1 to keep them in range. Where y0·y1 < 0, ρ²·r0·r1 + x²·y0·y1 is rewritten as
+    // r0·r1. Where y0·y1 < 0, ρ²·r0·r1 + x²·y0·y1 is rewritten as
     // d²·r0·r1 + x²·d²(d² + y0² + y1²)/(r0·r1 − y0·y1).
     let k = s.dy * ((rho2 + rr_minus_yy(ra, rb, y0, y1, rho2)) / (ra + rb));
-    let rr = s.r0 * s.r1;
     let yy = y0 * y1;
-    let num_g = ax * d * (k / rr);
+    let num_g = ax * d * (k * s.inv_rr);
     let x2 = ax * ax;
-    let same = x2.mul_add(yy / rr, rho2);
+    let same = x2.mul_add(yy * s.inv_rr, rho2);
     let opposite = x2.mul_add(
-        d2 * (y0.mul_add(y0, y1.mul_add(y1, d2)) / (rr - yy) / rr),
+        d2 * (y0.mul_add(y0, y1.mul_add(y1, d2)) / (s.rr - yy) * s.inv_rr),
         d2,
     );
-    let den_g = d2.mul_add((ra * rb) / rr, L::select(yy.ge(L::ZERO), same, opposite));
-    let g_smaller = (num_g / den_g).le(num_t / den_t);
+    let den_g = d2.mul_add(
+        (ra * rb) * s.inv_rr,
+        L::select(yy.ge(L::ZERO), same, opposite),
+    );
+    // tan(g/2) ≤ tan(t/2), cross-multiplied (the scaled geometry keeps the products in range).
+    let g_smaller = (num_g * den_t).le(num_t * den_g);
     let v = L::TWO * L::select(g_smaller, num_g, num_t).atan2(L::select(g_smaller, den_g, den_t));
     let rest = s.beta - v;
     Column {
@@ -323,19 +327,17 @@ fn two_sum<L: Math>(a: L, b: L) -> (L, L) {
     (s, (a - (s - bb)) + (b - bb))
 }
 
-/// (p + e)·e, accurately: p + e split exactly into hi + lo by components, then two f64 dot
-/// products, each rounded once. The first is within an ulp of the result; the second is
-/// rounding-sized.
+/// (p + e)·e, accurately: p + e split exactly into hi + lo by components, then hi·e in f64,
+/// rounded once (within an ulp of the result), plus lo·e, rounding-sized, in the lane.
 #[inline(always)]
 fn shifted_dot<L: Math>(p: V3<L>, e: V3<L>) -> L {
     let (x, xl) = two_sum(p.x, e.x);
     let (y, yl) = two_sum(p.y, e.y);
     let (z, zl) = two_sum(p.z, e.z);
-    let e = [e.x, e.y, e.z];
-    L::dot_wide([x, y, z], e) + L::dot_wide([xl, yl, zl], e)
+    L::dot_wide([x, y, z], [e.x, e.y, e.z]) + V3::new(xl, yl, zl).dot(e)
 }
 
-/// A power of two that brings a magnitude m into [2⁻⁸, 2⁸] (for m from 2⁻¹²⁰ to 2¹²⁰; 1 for
+/// A power of two that brings a magnitude m into [2⁻¹⁶, 2¹⁶] (for m from 2⁻¹¹² to 2¹¹²; 1 for
 /// NaN): multiplying by it is exact, so a problem that depends only on ratios (directions, solid
 /// angles) is solved bit for bit as it would be at m's own scale, but with squares and cubes far
 /// from overflow and underflow.
@@ -343,7 +345,7 @@ fn shifted_dot<L: Math>(p: V3<L>, e: V3<L>) -> L {
 fn pow2_scale<L: Math>(m: L) -> L {
     let mut scale = L::ONE;
     let mut m = m;
-    for e in [64, 32, 16, 8] {
+    for e in [64, 32, 16] {
         let (big, small) = (L::c(2f64.powi(e)), L::c(2f64.powi(-e)));
         let down = m.gt(big);
         let up = m.lt(small);
@@ -415,8 +417,8 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
         y1,
         dy: eyl,
         d,
-        r0: dist0,
-        r1: dist1,
+        rr: dist0 * dist1,
+        inv_rr: L::ONE / (dist0 * dist1),
         beta,
     };
     // The lune's parts beyond the rectangle, L(x0) towards −x and R(x1) towards +x: the tail

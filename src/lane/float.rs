@@ -58,6 +58,9 @@ pub trait Lane:
     const TWO: Self;
     /// ½ in every lane.
     const HALF: Self;
+    /// The lane's machine epsilon (2⁻²³ for the f32 lanes, 2⁻⁵² for f64): tolerances that
+    /// stand for rounding scale with it, so that the f64 reference is not judged by f32's.
+    const EPSILON: Self;
 
     /// `self · b + c`, with one rounding when the build has FMA and two otherwise, the same in
     /// both widths.
@@ -175,6 +178,7 @@ macro_rules! scalar_lane {
         const ONE: Self = 1.0;
         const TWO: Self = 2.0;
         const HALF: Self = 0.5;
+        const EPSILON: Self = Self::EPSILON;
         inline_fns! {
             fn lt(self, o: Self) -> bool { self < o }
             fn le(self, o: Self) -> bool { self <= o }
@@ -212,6 +216,7 @@ impl Lane for F32x8 {
     const ONE: Self = F32x8::new([1.0; 8]);
     const TWO: Self = F32x8::new([2.0; 8]);
     const HALF: Self = F32x8::new([0.5; 8]);
+    const EPSILON: Self = F32x8::new([f32::EPSILON; 8]);
 
     // On x86, minps and maxps are exactly select(a < b, a, b) and select(a > b, a, b), NaN and
     // signed zeros included (the second operand wins when the compare is false): one instruction

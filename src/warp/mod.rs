@@ -69,6 +69,7 @@ pub use hemisphere::{
     cosine_hemisphere, cosine_hemisphere_inverse, cosine_hemisphere_pdf, uniform_hemisphere,
     uniform_hemisphere_inverse, uniform_hemisphere_pdf,
 };
+pub(crate) use phong::phong_lobe_density;
 pub use phong::{PHONG_N_MAX, phong_lobe, phong_lobe_inverse, phong_lobe_pdf};
 pub use sphere::{uniform_sphere, uniform_sphere_inverse, uniform_sphere_pdf};
 pub use spherical_rectangle::{
@@ -77,8 +78,7 @@ pub use spherical_rectangle::{
 };
 pub use spherical_triangle::{
     SPHERICAL_TRIANGLE_MAX_SR, SPHERICAL_TRIANGLE_MIN_SR, SphericalTriangle, arvo_triangle,
-    spherical_triangle,
-    spherical_triangle_inverse, spherical_triangle_pdf,
+    spherical_triangle, spherical_triangle_inverse, spherical_triangle_pdf,
 };
 pub use tent::{tent, tent_inverse, tent_pdf};
 pub use triangle::{uniform_triangle, uniform_triangle_inverse, uniform_triangle_pdf};

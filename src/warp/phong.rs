@@ -40,10 +40,16 @@ pub fn phong_lobe<P: Point2<Lane = L>, L: Math>(u: P, n: L) -> P::Vec3 {
 /// rounding can produce from a slightly long vector, counts as 1.
 #[inline(always)]
 pub fn phong_lobe_pdf<L: Math>(cos_alpha: L, n: L) -> L {
-    let n = clamp_n(n);
-    let norm = (n + L::ONE) * L::c(0.5 * core::f64::consts::FRAC_1_PI);
-    let p = norm * (n * cos_alpha.min(L::ONE).ln()).exp();
+    let p = phong_lobe_density(cos_alpha.min(L::ONE).ln(), n);
     L::select(cos_alpha.gt(L::ZERO) & n.eq(n), p, L::ZERO)
+}
+
+/// (n+1)/(2π)·exp(n·ln cos α) from ln cos α, n clamped: the one formula of the lobe's density,
+/// for [`phong_lobe_pdf`] and for the Phong BSDF, which forms ln cos α its own way.
+#[inline(always)]
+pub(crate) fn phong_lobe_density<L: Math>(ln_cos: L, n: L) -> L {
+    let n = clamp_n(n);
+    (n + L::ONE) * L::c(0.5 * core::f64::consts::FRAC_1_PI) * (n * ln_cos).exp()
 }
 
 /// Inverse of [`phong_lobe`]: u₀ = cos^{n+1}α = exp((n+1)·ln(1 − t)) with t = 1 − cos α taken

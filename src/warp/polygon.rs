@@ -49,34 +49,8 @@ pub(crate) fn area_pdf_from_cos<L: Math>(wn: L, h: L, k: L) -> L {
     L::select(ok, p, L::ZERO)
 }
 
-/// True where direction `w` lies inside the convex polygon with vertices `p` and edges
-/// `e` (eᵢ = pᵢ₊₁ − pᵢ, given exactly where the caller has them) seen from the origin: on the
-/// inner side of every edge's plane through the origin.
-///
-/// Each plane normal is pᵢ × eᵢ, from the edge vector, so it keeps its precision for a small or
-/// distant polygon. Unlike intersecting w with the polygon's plane, this stays
-/// well-conditioned when the polygon is seen at a grazing angle. `winding` (any value with the
-/// sign of p₀·((p₁ − p₀) × (p₂ − p₀))) makes either winding work.
-#[inline(always)]
-pub(crate) fn inside_polygon<L: Math, const N: usize>(
-    w: V3<L>,
-    p: [V3<L>; N],
-    e: [V3<L>; N],
-    winding: L,
-) -> L::Mask {
-    let sign = L::ONE.copysign(winding);
-    let side = |i: usize| (w.dot(p[i].cross(e[i])) * sign).ge(L::ZERO);
-    let mut inside = side(0);
-    let mut i = 1;
-    while i < N {
-        inside = inside & side(i);
-        i += 1;
-    }
-    inside
-}
-
 /// How far outside a polygon's silhouette, in radians, a direction still counts as inside:
-/// 2⁻²¹ ≈ 4.8e-7 (eight f32 ulp of a unit vector) plus 2⁻¹⁷√Ω ≈ 7.6e-6·√Ω.
+/// (4 + 64√Ω)·ε, with ε the lane's epsilon: 4.8e-7 + 7.6e-6·√Ω in f32.
 ///
 /// A sample built on an edge (u on the boundary of the square) lands a few ulp on either side of
 /// the edge's plane, and the spherical maps' own f32 error, at most 6.6e-6 for the widest
@@ -85,7 +59,7 @@ pub(crate) fn inside_polygon<L: Math, const N: usize>(
 /// the light" and give it 0 (1 sample in 400 for wide random triangles, measured).
 #[inline(always)]
 pub(crate) fn inside_slack<L: Math>(omega: L) -> L {
-    L::c(1.0 / 2_097_152.0) + L::c(1.0 / 131_072.0) * omega.max(L::ZERO).sqrt()
+    L::EPSILON * L::c(64.0).mul_add(omega.max(L::ZERO).sqrt(), L::c(4.0))
 }
 
 /// The planes through the origin and the edges of a convex polygon, as unit normals pointing
@@ -98,21 +72,16 @@ pub(crate) struct EdgePlanes<L: Math, const N: usize> {
 }
 
 impl<L: Math, const N: usize> EdgePlanes<L, N> {
-    /// The planes of the polygon with vertices `p` (in order): pᵢ × pᵢ₊₁, formed in f64 for the
-    /// f32 lanes so that the plane of a short or distant edge keeps its direction to an ulp.
-    /// `winding` has the sign of p₀·((p₁ − p₀) × (p₂ − p₀)), so either winding works. A zero
-    /// or degenerate edge gives a NaN plane, which contains nothing.
+    /// The planes through the origin and the polygon's edges, from their normals pᵢ × pᵢ₊₁
+    /// (formed by the caller as accurately as it can: in f64 for the f32 lanes, so that the plane
+    /// of a short or distant edge keeps its direction to an ulp). `winding` has the sign of
+    /// p₀·((p₁ − p₀) × (p₂ − p₀)), so either winding works. A zero normal (a degenerate edge)
+    /// gives a NaN plane, which contains nothing.
     #[inline(always)]
-    pub(crate) fn new(p: [V3<L>; N], winding: L, omega: L) -> Self {
+    pub(crate) fn new(normals: [V3<L>; N], winding: L, omega: L) -> Self {
         let sign = L::ONE.copysign(winding);
-        let m = core::array::from_fn(|i| {
-            let (a, b) = (p[i], p[(i + 1) % N]);
-            let [x, y, z] = L::cross_wide([a.x, a.y, a.z], [b.x, b.y, b.z]);
-            let m = V3::new(x, y, z);
-            m.scale(sign / m.length())
-        });
         Self {
-            m,
+            m: normals.map(|m| m.scale(sign / m.length())),
             slack: -inside_slack(omega),
         }
     }

@@ -80,15 +80,15 @@ pub const SPHERICAL_RECTANGLE_MIN_SR: f32 = 1.0e-6;
 pub const SPHERICAL_RECTANGLE_MAX_SR: f32 = core::f32::consts::TAU;
 
 /// How far outside the rectangle, as the sine of the angle to an edge's plane, a direction still
-/// counts as inside, in units of ε·R/d (ε = 2⁻²³, R = |corner| + |ex| + |ey|, d the distance to
-/// the plane). A sample is an f32 sum, off the exact rectangle by up to a few ε·R, and each
-/// edge's plane, an f32 cross product, is turned by up to about ε·R/d; seen from the shading
-/// point, at distance d or more, both are a few ε·R/d of angle. For a rectangle facing the
-/// shading point R/d is about 1 to 3, so the slack is a few ulp of angle; seen at a grazing
-/// angle, f32 cannot place the sample or the plane more finely than that. With 8, none of
-/// 2.4e6 samples of random rectangles of every kind (u on the square's corners and edges
-/// included) falls outside.
-const INSIDE_SLACK: f64 = 8.0 * f32::EPSILON as f64;
+/// counts as inside, in units of ε·(1 + R/r) (ε = 2⁻²³, R = |corner| + |ex| + |ey|, r a lower
+/// bound on the distance to the rectangle: the larger of the plane's distance and the centre's
+/// distance less half the diagonal). A sample is an f32 sum, off the exact rectangle by up to a
+/// few ε·R, a few ε·R/r of angle from the shading point; the edge planes are formed in f64. For
+/// a rectangle not much larger than its distance that is a few ulp of angle, at grazing angles
+/// too. With 2, none of 2.4e6 samples of random rectangles of every kind (u on the square's
+/// corners and edges included) falls outside, and a 1e-3-wide light's ∫pdf grows by 2e-3 at
+/// most (with 8, by 8e-3).
+const INSIDE_SLACK: f64 = 2.0 * f32::EPSILON as f64;
 
 /// Everything the sampler, pdf and inverse need, computed once per rectangle.
 #[derive(Clone, Copy)]
@@ -133,7 +133,7 @@ struct Setup<L: Math> {
     inv_area: L,
     /// Unit normals of the planes through the shading point and each edge, pointing inwards.
     planes: [V3<L>; 4],
-    /// −INSIDE_SLACK·R/d.
+    /// −INSIDE_SLACK·(1 + R/r): see [`INSIDE_SLACK`].
     slack: L,
     valid: L::Mask,
     by_area: L::Mask,
@@ -433,9 +433,12 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
     let c1 = corner + ex;
     let c2 = c1 + ey;
     let c3 = corner + ey;
-    // Each edge's plane: its f32 rounding turns it by at most a few ε·R/d, within the slack.
+    // Each edge's plane, its normal p × e in f64: an f32 cross product would turn it by up to
+    // ε·|p|/d (the edge is nearly radial when the light is seen at a grazing angle), and the
+    // slack would have to grow with it.
     let plane = |p: V3<L>, e: V3<L>| {
-        let m = p.cross(e);
+        let [x, y, z] = L::cross_wide([p.x, p.y, p.z], [e.x, e.y, e.z]);
+        let m = V3::new(x, y, z);
         m.scale(sign / m.length())
     };
     let planes = [
@@ -444,8 +447,13 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
         plane(c2, -ex),
         plane(c3, -ey),
     ];
+    // The samples are f32 sums corner + s·ex + t·ey, off the exact rectangle by a few ε·R,
+    // which turns them by ε·R over their distance, at least the larger of d and the centre's
+    // distance less half the diagonal.
     let reach = corner.length() + exl + eyl;
-    let slack = -(L::c(INSIDE_SLACK) * (reach / d));
+    let half = L::HALF * (exl + eyl);
+    let near = d.max((corner + (ex + ey).scale(L::HALF)).length() - half);
+    let slack = -(L::c(INSIDE_SLACK) * (L::ONE + reach / near));
 
     // d ≈ 0: the shading point lies in the rectangle's plane (to within rounding), where VOS may
     // still report up to 4π.
@@ -766,9 +774,10 @@ pub fn spherical_rectangle<P: Point2<Lane = L>, L: Math>(
 /// multiple: it is normalised here as the sampler normalises its point, so the returned point
 /// itself gets the sampler's pdf bit for bit): 1/Ω, or the converted area pdf where it samples by
 /// area; 0 when `w` misses the rectangle, for a degenerate one, for NaN, and where |w|² is 0 or
-/// overflows. "Misses" is beyond a slack of 8ε·R/d as the sine of the angle to an edge's plane
-/// (ε = 2⁻²³, R = |corner| + |ex| + |ey|, d the distance to the plane: a few ulp of angle for a
-/// rectangle that faces the shading point), which covers the f32 rounding of the sample point.
+/// overflows. "Misses" is beyond a slack of 2ε·(1 + R/r) as the sine of the angle to an edge's
+/// plane (ε = 2⁻²³, R = |corner| + |ex| + |ey|, r a lower bound on the distance to the rectangle:
+/// a few ulp of angle unless the rectangle is much larger than its distance), which covers the
+/// f32 rounding of the sample point.
 #[inline]
 pub fn spherical_rectangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, corner: P, ex: P, ey: P) -> L {
     SphericalRectangle::new(corner, ex, ey).pdf(w)

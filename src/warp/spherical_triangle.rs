@@ -6,7 +6,7 @@
 
 use core::marker::PhantomData;
 
-use crate::lane::{V2, V3};
+use crate::lane::{Mask, V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::warp::common::clamp_u;
@@ -147,7 +147,8 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
         a: given.0,
         b: given.1,
         c: given.2,
-        edges: EdgePlanes::new([a, b, c], h, omega),
+        // The edge planes a × b, b × c, c × a (rotating the labels keeps the winding).
+        edges: EdgePlanes::new([nab, wide_cross(b, c), -nac], h, omega),
         h,
         ua,
         ub,
@@ -300,10 +301,17 @@ impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
     pub fn sample(&self, u: P::Vec2) -> (P, L) {
         let s = &self.s;
         let u = clamp_u(u.to_lanes());
-        let w_sph = arvo(s, u);
-        let bary = uniform_triangle(u);
-        let p = s.a.scale(bary.x) + s.b.scale(bary.y) + s.c.scale(bary.z);
-        let w = V3::select(s.by_area, p.normalize(), w_sph);
+        // Each path only where some lane takes it: the choice is the triangle's, so the branch
+        // is predictable, and a spherically sampled triangle pays nothing for the fallback.
+        let zero = V3::all(L::ZERO);
+        let w_sph = if (!s.by_area).any() { arvo(s, u) } else { zero };
+        let w_area = if s.by_area.any() {
+            let bary = uniform_triangle(u);
+            (s.a.scale(bary.x) + s.b.scale(bary.y) + s.c.scale(bary.z)).normalize()
+        } else {
+            zero
+        };
+        let w = V3::select(s.by_area, w_area, w_sph);
         // The pdf is the pdf function's, at the very direction returned: equal by construction.
         let pdf = self.pdf_lanes(w);
         let w = V3::select(pdf.gt(L::ZERO), w, V3::new(L::ZERO, L::ZERO, L::ONE));
@@ -320,16 +328,20 @@ impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
     fn pdf_lanes(&self, w: V3<L>) -> L {
         let s = &self.s;
         let sph = L::ONE / s.omega;
-        // w·n from the vertices in f64: with n rounded to f32 first, the pdf of a direction
-        // 1e-5 rad from the plane would be 5 % off.
-        let (a, b, c) = (s.a, s.b, s.c);
-        let wn = L::plane_dot(
-            [w.x, w.y, w.z],
-            [a.x, a.y, a.z],
-            [b.x, b.y, b.z],
-            [c.x, c.y, c.z],
-        );
-        let area = area_pdf_from_cos(wn, s.h, L::TWO);
+        let area = if s.by_area.any() {
+            // w·n from the vertices in f64: with n rounded to f32 first, the pdf of a direction
+            // 1e-5 rad from the plane would be 5 % off.
+            let (a, b, c) = (s.a, s.b, s.c);
+            let wn = L::plane_dot(
+                [w.x, w.y, w.z],
+                [a.x, a.y, a.z],
+                [b.x, b.y, b.z],
+                [c.x, c.y, c.z],
+            );
+            area_pdf_from_cos(wn, s.h, L::TWO)
+        } else {
+            L::ZERO
+        };
         let pdf = L::select(s.by_area, area, sph);
         L::select(s.valid & s.edges.contains(w), pdf, L::ZERO)
     }

@@ -24,7 +24,7 @@
 //! | 4 | `distr` (feature `rand`) | rand's `Distribution` for the warps | warp |
 //! | 4 | `estimate`, `mis` (to come) | accumulators, roulette, splitting; MIS weights | lane only |
 //! | 4 | `reference` (to come) | analytic f64 irradiance references | core and libm only |
-//! | 5 | `scene` (to come) | lights and BSDFs | warp, frame |
+//! | 5 | [`scene`] | sphere, disk, triangle and rectangle lights, light selection, Lambert and modified Phong BSDFs | lane, math, point, frame, warp |
 //! | 6 | `direct` (to come) | the direct-lighting estimator | scene, mis, estimate, seq |
 //! | — | [`verify`] | (std) χ² goodness of fit and the packet-vs-scalar lane check | anything below |
 //!
@@ -77,6 +77,7 @@ pub mod mis;
 pub mod point;
 pub mod reference;
 pub mod rng;
+pub mod scene;
 pub mod seq;
 pub mod warp;
 pub mod x8;

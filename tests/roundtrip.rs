@@ -82,7 +82,12 @@ fn inverses_recover_u() {
     // hemisphere and a needle lobe.
     all.extend([2.0, 1e-7].map(|h| Sampler::UniformCone { h }));
     all.extend([0.0, 1e6].map(|n| Sampler::PhongLobe { n }));
-    let failures: Vec<String> = all.into_iter().filter_map(|s| measure(s, &us)).collect();
+    // The lights and BSDFs have no inverse.
+    let failures: Vec<String> = all
+        .into_iter()
+        .filter(|s| s.has_inverse())
+        .filter_map(|s| measure(s, &us))
+        .collect();
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 

@@ -42,6 +42,9 @@ struct Row {
     worst_u: Vec2,
     max_pdf_rel_err: f64,
     chi2_p: f64,
+    /// A light's first sample at a new shading point (set-up included) and each further sample
+    /// of the prepared light, scalar ns, timed as one interleaved pair.
+    first_further_ns: Option<(f64, f64)>,
 }
 
 fn uniform_points(n: usize, seed: u64) -> Vec<Vec2> {
@@ -149,7 +152,7 @@ fn measure(cfg: &Config, s: Sampler, pts: &[Vec2], packets: &[Vec2x8], err_pts: 
     let mut max_abs_err = 0.0f64;
     let mut worst_u = Vec2::ZERO;
     let mut max_pdf_rel_err = 0.0f64;
-    for &u in err_pts {
+    for &u in err_pts.iter().filter(|&&u| !s.parameter_sensitive(u)) {
         let a = s.sample(u).0;
         let b = s.sample(u.as_dvec2()).0;
         let e = (a.as_dvec3() - b).abs().max_element();
@@ -172,6 +175,25 @@ fn measure(cfg: &Config, s: Sampler, pts: &[Vec2], packets: &[Vec2x8], err_pts: 
     let n = if cfg.quick { 200_000 } else { 1_000_000 };
     let us = uniform_points(n, 7);
     let chi2_p = s.chi_square(n, |i| us[i]).p_value;
+    let first_further_ns = s.scene_light().map(|light| {
+        let p = Vec3::ZERO;
+        let prepared = light.at(p);
+        time_pair(
+            cfg,
+            pts,
+            pts,
+            &|us: &[Vec2], out: &mut [Vec3]| {
+                for (o, &u) in out.iter_mut().zip(us) {
+                    *o = light.at(black_box(p)).sample(u).wi;
+                }
+            },
+            &|us: &[Vec2], out: &mut [Vec3]| {
+                for (o, &u) in out.iter_mut().zip(us) {
+                    *o = prepared.sample(u).wi;
+                }
+            },
+        )
+    });
     Row {
         name: s.name(),
         scalar_ns,
@@ -181,6 +203,7 @@ fn measure(cfg: &Config, s: Sampler, pts: &[Vec2], packets: &[Vec2x8], err_pts: 
         worst_u,
         max_pdf_rel_err,
         chi2_p,
+        first_further_ns,
     }
 }
 
@@ -247,12 +270,7 @@ fn stability(quick: bool) -> Vec<(String, f64, f64, f64)> {
                 let e = (p32.as_dvec3().normalize() - p64.normalize()).length();
                 worst = if worse(e, worst) { e } else { worst };
             }
-            rows.push((
-                format!("{label} s={s}"),
-                omega,
-                worst,
-                worst / omega.sqrt(),
-            ));
+            rows.push((format!("{label} s={s}"), omega, worst, worst / omega.sqrt()));
         }
     }
     rows
@@ -375,6 +393,23 @@ fn main() {
         );
         rows.push(r);
     }
+    println!("\nprepared lights: scalar ns of the first sample at a new shading point (set-up");
+    println!("  included) and of each further sample of the light prepared there (`light.at(p)`):");
+    println!(
+        "{:<28} {:>10} {:>10} {:>8}",
+        "light", "first ns", "further ns", "ratio"
+    );
+    for r in &rows {
+        if let Some((first, further)) = r.first_further_ns {
+            println!(
+                "{:<28} {:>10.2} {:>10.2} {:>7.1}×",
+                r.name,
+                first,
+                further,
+                first / further
+            );
+        }
+    }
     println!("\nspherical sampling stability (f32 map vs its f64 instance, no area fallback):");
     println!(
         "{:<24} {:>12} {:>14} {:>14}",
@@ -495,7 +530,7 @@ fn main() {
                 "warps",
                 rows.iter()
                     .map(|r| format!(
-                        "{{\"name\": \"{}\", \"scalar_ns\": {}, \"scalar_vs_plain\": {}, \"x8_ns\": {}, \"speedup\": {}, \"max_abs_err\": {}, \"max_pdf_rel_err\": {}, \"chi2_p\": {}}}",
+                        "{{\"name\": \"{}\", \"scalar_ns\": {}, \"scalar_vs_plain\": {}, \"x8_ns\": {}, \"speedup\": {}, \"max_abs_err\": {}, \"max_pdf_rel_err\": {}, \"chi2_p\": {}, \"first_ns\": {}, \"further_ns\": {}}}",
                         esc(&r.name),
                         num(r.scalar_ns),
                         num(r.scalar_vs_plain.unwrap_or(f64::NAN)),
@@ -503,7 +538,9 @@ fn main() {
                         num(r.scalar_ns / r.x8_ns),
                         num(r.max_abs_err),
                         num(r.max_pdf_rel_err),
-                        num(r.chi2_p)
+                        num(r.chi2_p),
+                        num(r.first_further_ns.map_or(f64::NAN, |t| t.0)),
+                        num(r.first_further_ns.map_or(f64::NAN, |t| t.1))
                     ))
                     .collect(),
             ),

@@ -40,7 +40,7 @@ fuzz_target!(|data: &[u8]| {
         let param = if matches!(s, Sampler::PhongLobe { .. }) { f[3] } else { f[2] };
         // The rectangle's contract asks for orthogonal edges: keep the fuzzed light inside it.
         let geometry = match s {
-            Sampler::SphericalRectangle { .. } => {
+            Sampler::SphericalRectangle { .. } | Sampler::LightRectangle { .. } => {
                 let [c, ex, ey] = geometry;
                 let ey = ey - ex * (ey.dot(ex) / ex.length_squared());
                 // f32 Gram–Schmidt leaves a rounding residue along ex when ey's part along it is

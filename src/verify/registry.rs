@@ -29,6 +29,7 @@ use super::{Cap, ChiSquare, ChiSquareResult, PlanarLight, square_to_triangle, tr
 use crate::lane::{V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
+use crate::scene::{self, DiskLight, Lambert, Phong, RectangleLight, SphereLight, TriangleLight};
 use crate::warp;
 
 /// One sampler of the registry, with its parameters. Outputs are widened to 3D: the disks give
@@ -70,6 +71,48 @@ pub enum Sampler {
         /// Corner, ex, ey.
         v: [Vec3; 3],
     },
+    /// [`scene::SphereLight::sample`] from the origin (the direction and its pdf).
+    LightSphere {
+        /// The centre.
+        center: Vec3,
+        /// The radius.
+        radius: f32,
+    },
+    /// [`scene::DiskLight::sample`] from the origin.
+    LightDisk {
+        /// The centre.
+        center: Vec3,
+        /// The normal.
+        normal: Vec3,
+        /// The radius.
+        radius: f32,
+    },
+    /// [`scene::TriangleLight::sample`] from the origin.
+    LightTriangle {
+        /// The vertices.
+        v: [Vec3; 3],
+    },
+    /// [`scene::RectangleLight::sample`] from the origin.
+    LightRectangle {
+        /// Corner, ex, ey (orthogonal).
+        v: [Vec3; 3],
+    },
+    /// [`scene::Lambert::sample`] with ρ = 1, in the local frame.
+    BsdfLambert {
+        /// The outgoing direction.
+        wo: Vec3,
+    },
+    /// [`scene::Phong::sample`] with the diffuse and specular reflectances kd, ks (grey).
+    BsdfPhong {
+        /// The outgoing direction.
+        wo: Vec3,
+        /// kd.
+        kd: f32,
+        /// ks.
+        ks: f32,
+        /// The exponent.
+        n: f32,
+    },
 }
 
 /// What a sampler gives for NaN in u (and, for the parametrised ones, a NaN parameter).
@@ -101,7 +144,9 @@ fn rectangle(s: f32) -> [Vec3; 3] {
 
 /// Every sampler at the parameters the evidence uses: the cone at two sizes, the Phong lobe at
 /// three exponents, the spherical polygons large (≈ 1 sr), small (6e-5 / 0.035 sr) and below the
-/// spherical-sampling threshold (sampled by area).
+/// spherical-sampling threshold (1e-6 sr for both: sampled by area); then the lights seen from
+/// the origin (a sphere far, tiny and around the point, a disk large and small, a triangle and a
+/// rectangle large and sampled by area) and the BSDFs.
 pub fn registry() -> Vec<Sampler> {
     use Sampler::*;
     vec![
@@ -122,7 +167,66 @@ pub fn registry() -> Vec<Sampler> {
         SphericalTriangle { v: triangle(1e-3) },
         SphericalRectangle { v: rectangle(1.0) },
         SphericalRectangle { v: rectangle(0.2) },
-        SphericalRectangle { v: rectangle(0.05) },
+        SphericalRectangle { v: rectangle(1e-3) },
+        LightSphere {
+            center: Vec3::new(0.6, -0.3, 3.0),
+            radius: 1.0,
+        },
+        // sin²θmax = 1e-4: smaller lights (down to 1e-12) are tested in `tests/scene.rs`, where
+        // the χ² judge is the f64 pdf; here the f32 pdf's slack of 2ε in sin θ (a band 5e-5 of
+        // this cone's area, 5e-4 of one with sin²θmax = 1e-6) stays below what 1e6 samples see.
+        LightSphere {
+            center: Vec3::new(0.2, 0.1, 1.0),
+            radius: 1.02e-2,
+        },
+        LightSphere {
+            center: Vec3::new(0.3, -0.2, 0.25),
+            radius: 1.0,
+        },
+        LightDisk {
+            center: Vec3::new(0.4, 0.3, 2.0),
+            normal: Vec3::new(0.2, -0.3, -1.0),
+            radius: 1.0,
+        },
+        LightDisk {
+            center: Vec3::new(0.4, 0.3, 2.0),
+            normal: Vec3::new(0.2, -0.3, -1.0),
+            radius: 0.02,
+        },
+        LightTriangle { v: triangle(1.0) },
+        LightTriangle { v: triangle(1e-3) },
+        LightRectangle {
+            v: square_light(1.0),
+        },
+        LightRectangle {
+            v: square_light(0.05),
+        },
+        BsdfLambert {
+            wo: Vec3::new(0.3, -0.2, 0.933_809),
+        },
+        BsdfPhong {
+            wo: Vec3::new(0.5, 0.1, 0.860_232_5),
+            kd: 0.4,
+            ks: 0.5,
+            n: 20.0,
+        },
+        BsdfPhong {
+            wo: Vec3::new(0.0, 0.6, 0.8),
+            kd: 0.0,
+            ks: 0.9,
+            n: 500.0,
+        },
+    ]
+}
+
+/// A square light of side `s` one unit up, tilted about x by 0.4 rad: corner and orthogonal edges.
+fn square_light(s: f32) -> [Vec3; 3] {
+    let (sn, cs) = 0.4f32.sin_cos();
+    let ey = Vec3::new(0.0, s * cs, s * sn);
+    [
+        Vec3::new(-0.5 * s, -0.3 * s, 1.0),
+        Vec3::new(s, 0.0, 0.0),
+        ey,
     ]
 }
 
@@ -183,6 +287,19 @@ impl Sampler {
             Tent => "tent".into(),
             SphericalTriangle { .. } => format!("spherical_triangle {}", self.polygon_size()),
             SphericalRectangle { .. } => format!("spherical_rectangle {}", self.polygon_size()),
+            LightSphere { center, radius } => {
+                let s2 = (*radius as f64 / center.as_dvec3().length()).powi(2);
+                if s2 >= 1.0 {
+                    "light_sphere inside".into()
+                } else {
+                    format!("light_sphere sin2={s2:.0e}")
+                }
+            }
+            LightDisk { radius, .. } => format!("light_disk r={radius}"),
+            LightTriangle { .. } => format!("light_triangle {}", self.polygon_size()),
+            LightRectangle { .. } => format!("light_rectangle {}", self.polygon_size()),
+            BsdfLambert { .. } => "bsdf_lambert".into(),
+            BsdfPhong { kd, n, .. } => format!("bsdf_phong n={n} kd={kd}"),
         }
     }
 
@@ -191,8 +308,12 @@ impl Sampler {
     /// "large" above; "" for the other samplers.
     pub fn polygon_size(&self) -> &'static str {
         let min = match self {
-            Sampler::SphericalTriangle { .. } => warp::SPHERICAL_TRIANGLE_MIN_SR,
-            Sampler::SphericalRectangle { .. } => warp::SPHERICAL_RECTANGLE_MIN_SR,
+            Sampler::SphericalTriangle { .. } | Sampler::LightTriangle { .. } => {
+                warp::SPHERICAL_TRIANGLE_MIN_SR
+            }
+            Sampler::SphericalRectangle { .. } | Sampler::LightRectangle { .. } => {
+                warp::SPHERICAL_RECTANGLE_MIN_SR
+            }
             _ => return "",
         };
         let pdf = self.sample(Vec2::splat(0.5)).1;
@@ -212,6 +333,13 @@ impl Sampler {
         match self {
             Sampler::UniformCone { .. } => Sampler::UniformCone { h: p },
             Sampler::PhongLobe { .. } => Sampler::PhongLobe { n: p },
+            Sampler::LightSphere { center, .. } => Sampler::LightSphere { center, radius: p },
+            Sampler::LightDisk { center, normal, .. } => Sampler::LightDisk {
+                center,
+                normal,
+                radius: p,
+            },
+            Sampler::BsdfPhong { wo, kd, ks, .. } => Sampler::BsdfPhong { wo, kd, ks, n: p },
             other => other,
         }
     }
@@ -221,6 +349,8 @@ impl Sampler {
         match self {
             Sampler::SphericalTriangle { .. } => Sampler::SphericalTriangle { v },
             Sampler::SphericalRectangle { .. } => Sampler::SphericalRectangle { v },
+            Sampler::LightTriangle { .. } => Sampler::LightTriangle { v },
+            Sampler::LightRectangle { .. } => Sampler::LightRectangle { v },
             other => other,
         }
     }
@@ -231,6 +361,7 @@ impl Sampler {
             Sampler::SphericalTriangle { .. } | Sampler::SphericalRectangle { .. } => {
                 NanPolicy::ZeroPdf
             }
+            _ if self.is_light() => NanPolicy::ZeroPdf,
             _ => NanPolicy::NanOut,
         }
     }
@@ -242,7 +373,9 @@ impl Sampler {
         match self {
             Sampler::ConcentricDisk | Sampler::PolarDisk | Sampler::Tent => &[0, 1],
             Sampler::UniformTriangle => &[0, 1],
-            Sampler::CosineHemisphere | Sampler::PhongLobe { .. } => &[2],
+            Sampler::CosineHemisphere | Sampler::PhongLobe { .. } | Sampler::BsdfLambert { .. } => {
+                &[2]
+            }
             _ => &[0, 1, 2],
         }
     }
@@ -270,6 +403,8 @@ impl Sampler {
             Sampler::SphericalTriangle { .. } | Sampler::SphericalRectangle { .. } => {
                 self.sample(Vec2::splat(0.5)).1 > 0.0
             }
+            Sampler::BsdfPhong { n, .. } => !n.is_nan(),
+            _ if self.is_light() => self.sample(Vec2::splat(0.5)).1 > 0.0,
             _ => true,
         }
     }
@@ -282,7 +417,93 @@ impl Sampler {
 
     #[inline(always)]
     fn verts<L: Math>(v: &[Vec3; 3]) -> [V3<L>; 3] {
-        v.map(|p| V3::new(Self::param(p.x), Self::param(p.y), Self::param(p.z)))
+        v.map(Self::vec)
+    }
+
+    #[inline(always)]
+    fn vec<L: Math>(p: Vec3) -> V3<L> {
+        V3::new(Self::param(p.x), Self::param(p.y), Self::param(p.z))
+    }
+
+    /// The light of a light sampler, with Le = 1, in any width; `None` for the other samplers.
+    #[inline(always)]
+    fn light<V: Point3<Lane = L>, L: Math>(&self) -> Option<scene::Light<V>> {
+        let v = |p: Vec3| V::from_lanes(Self::vec(p));
+        let one = V::from_lanes(V3::all(L::ONE));
+        Some(match *self {
+            Sampler::LightSphere { center, radius } => {
+                scene::Light::Sphere(SphereLight::new(v(center), Self::param(radius), one))
+            }
+            Sampler::LightDisk {
+                center,
+                normal,
+                radius,
+            } => scene::Light::Disk(DiskLight::new(
+                v(center),
+                v(normal),
+                Self::param(radius),
+                one,
+            )),
+            Sampler::LightTriangle { v: [a, b, c] } => {
+                scene::Light::Triangle(TriangleLight::new(v(a), v(b), v(c), one))
+            }
+            Sampler::LightRectangle { v: [c, ex, ey] } => {
+                scene::Light::Rectangle(RectangleLight::new(v(c), v(ex), v(ey), one))
+            }
+            _ => return None,
+        })
+    }
+
+    /// The scene light of a light sampler (Le = 1, seen from the origin), for callers that time
+    /// or test its other methods (the prepared form, `hit`); `None` for the other samplers.
+    pub fn scene_light(&self) -> Option<scene::Light> {
+        self.light()
+    }
+
+    /// True for the four lights, sampled from the origin.
+    pub fn is_light(&self) -> bool {
+        matches!(
+            self,
+            Sampler::LightSphere { .. }
+                | Sampler::LightDisk { .. }
+                | Sampler::LightTriangle { .. }
+                | Sampler::LightRectangle { .. }
+        )
+    }
+
+    /// True where the map is so sensitive to the rounding of its parameters that the f32 map and
+    /// its f64 instance differ by more than rounding of the map itself: the Phong BSDF just
+    /// around its lobe choice at u₀ = P = kd/(kd + ks). The two instances' P differ by rounding
+    /// (1e-7 relative), so next to P they may pick different lobes; and above it the lobe's
+    /// rescaled u₀, v = (u₀ − P)/(1 − P), carries P's rounding into a map that is steep for small
+    /// v (dt/dv ∝ v^(−n/(n+1))): 1e-5 of direction at v = 0.01; below it, v = u₀/P near 1 puts
+    /// the cosine lobe's sample at the rim, where z = √(1 − r²) is steep in r; and at u₀ → 1 the
+    /// rescaled u₀'s own rounding moves the lobe's peak, where sin α ∝ √(1 − v). Error
+    /// measurements skip u whose rescaled u₀ lies within 5 % of P's side of the choice, or u₀
+    /// within 1e-5 of 1.
+    pub fn parameter_sensitive(&self, u: Vec2) -> bool {
+        match *self {
+            Sampler::BsdfPhong { kd, ks, .. } => {
+                let p = kd as f64 / (kd as f64 + ks as f64);
+                let u0 = u.x as f64;
+                (u0 > 0.95 * p && u0 < p + 0.05 * (1.0 - p)) || u0 > 1.0 - 1e-5
+            }
+            _ => false,
+        }
+    }
+
+    /// True for the two BSDFs.
+    pub fn is_bsdf(&self) -> bool {
+        matches!(
+            self,
+            Sampler::BsdfLambert { .. } | Sampler::BsdfPhong { .. }
+        )
+    }
+
+    /// False for the lights and BSDFs, which have no inverse: [`inverse`](Self::inverse) gives
+    /// NaN for them.
+    pub fn has_inverse(&self) -> bool {
+        !(self.is_light() || self.is_bsdf())
     }
 
     /// The sample of `u` and its pdf (the pdf the warp returns, or its pdf function at the
@@ -403,6 +624,48 @@ impl Sampler {
                     },
                 )
             }
+            // The lights, sampled from the origin: the light through `black_box`, as above.
+            Sampler::LightSphere { .. }
+            | Sampler::LightDisk { .. }
+            | Sampler::LightTriangle { .. }
+            | Sampler::LightRectangle { .. } => {
+                let light = self.light::<V3<L>, L>();
+                visit.visit(
+                    #[inline(always)]
+                    move |u| match black_box(light) {
+                        Some(l) => {
+                            let s = l.sample(V3::all(L::ZERO), u);
+                            (s.wi, s.pdf)
+                        }
+                        None => (V3::all(L::ZERO), L::ZERO),
+                    },
+                )
+            }
+            Sampler::BsdfLambert { wo } => {
+                let wo = Self::vec(wo);
+                visit.visit(
+                    #[inline(always)]
+                    move |u| {
+                        let s = Lambert::new(V3::all(L::ONE)).sample(wo, u);
+                        (s.wi, s.pdf)
+                    },
+                )
+            }
+            Sampler::BsdfPhong { wo, kd, ks, n } => {
+                let wo = Self::vec(wo);
+                let bsdf = Phong::new(
+                    V3::all(Self::param(kd)),
+                    V3::all(Self::param(ks)),
+                    Self::param(n),
+                );
+                visit.visit(
+                    #[inline(always)]
+                    move |u| {
+                        let s = bsdf.sample(wo, u);
+                        (s.wi, s.pdf)
+                    },
+                )
+            }
         }
     }
 
@@ -431,6 +694,20 @@ impl Sampler {
                 let [a, b, c] = Self::verts(&v);
                 warp::spherical_rectangle_pdf(x.normalize(), a, b, c)
             }
+            Sampler::LightSphere { .. }
+            | Sampler::LightDisk { .. }
+            | Sampler::LightTriangle { .. }
+            | Sampler::LightRectangle { .. } => match self.light::<V3<L>, L>() {
+                Some(l) => l.pdf(V3::all(L::ZERO), x),
+                None => L::ZERO,
+            },
+            Sampler::BsdfLambert { wo } => Lambert::new(V3::all(L::ONE)).pdf(Self::vec(wo), x),
+            Sampler::BsdfPhong { wo, kd, ks, n } => Phong::new(
+                V3::all(Self::param(kd)),
+                V3::all(Self::param(ks)),
+                Self::param(n),
+            )
+            .pdf(Self::vec(wo), x),
         }
     }
 
@@ -456,6 +733,7 @@ impl Sampler {
                 let [a, b, c] = Self::verts(&v);
                 warp::spherical_rectangle_inverse(x, a, b, c)
             }
+            _ => V2::new(L::c(f64::NAN), L::c(f64::NAN)),
         };
         Point2::from_lanes(u)
     }
@@ -484,6 +762,13 @@ impl Sampler {
                 }
                 Sampler::Tent => x.x.abs() <= 1.0 && x.y.abs() <= 1.0 && x.z == 0.0,
                 Sampler::SphericalTriangle { .. } => unit,
+                // A light's direction is unit and on the light (its f32 pdf says so); a
+                // BSDF's is unit.
+                Sampler::LightSphere { .. }
+                | Sampler::LightDisk { .. }
+                | Sampler::LightTriangle { .. }
+                | Sampler::LightRectangle { .. } => unit && self.pdf(x) > 0.0,
+                Sampler::BsdfLambert { .. } | Sampler::BsdfPhong { .. } => unit,
                 Sampler::SphericalRectangle { v } => {
                     // Within 1e-5 of the light's size and distance of its parallelogram, in the
                     // plane and across it: an f32 point far from the origin is rounded on the
@@ -525,7 +810,9 @@ impl Sampler {
         if !(pdf.is_finite() && pdf >= 0.0) {
             return Err(format!("pdf not finite and ≥ 0: {}", ctx()));
         }
-        if !s.is_polygon() && pdf.to_bits() != s.pdf(x).to_bits() {
+        // A light's dropped sample (pdf 0) sits at +z, which may be on the light.
+        let dropped_light = s.is_light() && pdf == 0.0;
+        if !s.is_polygon() && !dropped_light && pdf.to_bits() != s.pdf(x).to_bits() {
             return Err(format!("returned pdf ≠ pdf(x) = {:e}: {}", s.pdf(x), ctx()));
         }
         let param_nan = match s {
@@ -541,7 +828,7 @@ impl Sampler {
             if !ok {
                 return Err(format!("NaN in: not {:?}: {}", s.nan_policy(), ctx()));
             }
-        } else if s.is_polygon() {
+        } else if s.is_polygon() || s.is_light() {
             // A light either gives a sample on it with a positive pdf or drops it (pdf 0, as
             // for degenerate geometry, or where the area pdf would overflow) at a finite point.
             let on_light = pdf > 0.0 && s.in_domain(x);
@@ -562,7 +849,7 @@ impl Sampler {
             let back = s.inverse(x);
             let unit =
                 back.is_finite() && back.cmpge(Vec2::ZERO).all() && back.cmple(Vec2::ONE).all();
-            if !unit {
+            if s.has_inverse() && !unit {
                 return Err(format!("inverse {back:?} outside [0, 1]²: {}", ctx()));
             }
         } else if pdf != 0.0 || !(x.is_finite() || s.is_corner(x)) {
@@ -645,10 +932,11 @@ impl Sampler {
                 _ => [4e-6, 1.5e-6],
             },
             Sampler::SphericalRectangle { .. } => match self.polygon_size() {
-                "small" => [1.5e-5, 5e-7],
-                "large" => [2e-6, 5e-7],
-                _ => [1e-6, 5e-7],
+                "area" => [1.5e-4, 1.5e-4],
+                _ => [2e-6, 5e-7],
             },
+            // No inverse.
+            _ => [0.0, 0.0],
         }
     }
 
@@ -677,6 +965,53 @@ impl Sampler {
             Sampler::UniformCone { .. } => [true, u.x > 1e-6],
             Sampler::SphericalTriangle { .. } => [u.y > 1e-3, true],
             _ => [true, true],
+        }
+    }
+
+    /// The cap of directions that holds every sample of a light or BSDF, for the χ² zoom and
+    /// for quadrature: the cone of a sphere seen from outside (2 % wider), a cap 20 % wider
+    /// than a disk's rim or a polygon's vertices, the hemisphere of Lambert, the whole sphere for
+    /// a Phong BSDF with a diffuse part, and for a pure Phong lobe the cap about the mirror
+    /// direction outside which cosⁿα is below e⁻¹⁵ (1 − cos α > 15/n).
+    pub fn cap(&self) -> Cap {
+        let cap_of_points = |pts: &[Vec3]| Cap::around(pts);
+        match *self {
+            Sampler::LightSphere { center, radius } => {
+                let c = center.as_dvec3();
+                let s2 = (radius as f64 / c.length()).powi(2);
+                if s2 < 1.0 {
+                    // 50/49 of the cone: its edge then falls on the edge of the χ² grid's
+                    // last row of 50, where no cell straddles the discontinuity.
+                    Cap::new(c, 50.0 / 49.0 * s2 / (1.0 + (1.0 - s2).sqrt()))
+                } else {
+                    Cap::z(2.0)
+                }
+            }
+            Sampler::LightDisk {
+                center,
+                normal,
+                radius,
+            } => {
+                let (t, b) = normal.normalize().any_orthonormal_pair();
+                let rim: Vec<Vec3> = (0..64)
+                    .map(|k| {
+                        let (sn, cs) = (k as f32 * core::f32::consts::TAU / 64.0).sin_cos();
+                        center + (t * cs + b * sn) * radius
+                    })
+                    .collect();
+                cap_of_points(&rim)
+            }
+            Sampler::LightTriangle { v } | Sampler::SphericalTriangle { v } => cap_of_points(&v),
+            Sampler::LightRectangle { v: [c, ex, ey] }
+            | Sampler::SphericalRectangle { v: [c, ex, ey] } => {
+                cap_of_points(&[c, c + ex, c + ey, c + ex + ey])
+            }
+            Sampler::BsdfLambert { .. } => Cap::z(1.0),
+            Sampler::BsdfPhong { wo, kd, n, .. } if kd == 0.0 && n >= 100.0 => {
+                let r = DVec3::new(-wo.x as f64, -wo.y as f64, wo.z as f64);
+                Cap::new(r, 15.0 / n as f64)
+            }
+            _ => Cap::z(2.0),
         }
     }
 
@@ -746,8 +1081,20 @@ impl Sampler {
                 sample,
                 |w: DVec3| judge.pdf(w.as_vec3()) as f64,
             ),
-            Sampler::SphericalRectangle { v } => PlanarLight::parallelogram(v[0], v[1], v[2]).test(
+            Sampler::SphericalRectangle { v } | Sampler::LightRectangle { v } => {
+                PlanarLight::parallelogram(v[0], v[1], v[2]).test(
+                    ChiSquare::square().samples(samples),
+                    sample,
+                    |w: DVec3| judge.pdf(w.as_vec3()) as f64,
+                )
+            }
+            Sampler::LightTriangle { v } => PlanarLight::triangle(v[0], v[1], v[2]).test(
                 ChiSquare::square().samples(samples),
+                sample,
+                |w: DVec3| judge.pdf(w.as_vec3()) as f64,
+            ),
+            _ => self.cap().test(
+                ChiSquare::sphere().samples(samples).ires(6),
                 sample,
                 |w: DVec3| judge.pdf(w.as_vec3()) as f64,
             ),

@@ -345,8 +345,13 @@ fn shifted_dot<L: Math>(p: V3<L>, e: V3<L>) -> L {
 fn pow2_scale<L: Math>(m: L) -> L {
     let mut scale = L::ONE;
     let mut m = m;
-    for e in [64, 32, 16] {
-        let (big, small) = (L::c(2f64.powi(e)), L::c(2f64.powi(-e)));
+    // 2^±64, 2^±32, 2^±16 (core has no powi without std).
+    for (big, small) in [
+        (1.8446744073709552e19, 5.421010862427522e-20),
+        (4294967296.0, 2.3283064365386963e-10),
+        (65536.0, 1.52587890625e-5),
+    ] {
+        let (big, small) = (L::c(big), L::c(small));
         let down = m.gt(big);
         let up = m.lt(small);
         let k = L::select(down, small, L::select(up, big, L::ONE));

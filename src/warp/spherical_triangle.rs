@@ -212,11 +212,16 @@ fn arvo<L: Math>(s: &Setup<L>, u: V2<L>) -> V3<L> {
     let cos_b = ((x - y) * (x + y) * r).clamp(L::c(-1.0), L::ONE);
     let sin_b = L::TWO * x * y * r;
     let c_hat = s.ua.scale(cos_b) + s.t_ac.scale(sin_b);
-    // 1 − Ĉ·B as |Ĉ − B|²/2, so that z keeps its precision when Ĉ is close to B.
-    let d = c_hat - s.ub;
-    let one_minus_z = u.y * (L::HALF * d.dot(d));
+    // 1 − Ĉ·B as |Ĉ − B|²/2, so that z keeps its precision when Ĉ is close to B, and 1 + z as
+    // (1 − u₁)(1 − Ĉ·B) + |Ĉ + B|²/2, a sum of non-negative terms, so that sin z = √((1−z)(1+z))
+    // keeps it when Ĉ is nearly opposite B (2 − (1 − z) would cancel there: 5e-6 of direction
+    // for a 5 sr triangle at u = (1, 1)).
+    let (dm, dp) = (c_hat - s.ub, c_hat + s.ub);
+    let full = L::HALF * dm.dot(dm);
+    let one_minus_z = u.y * full;
+    let one_plus_z = (L::ONE - u.y).mul_add(full, L::HALF * dp.dot(dp));
     let z = L::ONE - one_minus_z;
-    let sin_z = (one_minus_z * (L::TWO - one_minus_z)).max(L::ZERO).sqrt();
+    let sin_z = (one_minus_z * one_plus_z).max(L::ZERO).sqrt();
     // Each step is accurate to a few ulp, but their rounding leaves |w| off 1 by up to 1e-5 for
     // wide triangles: renormalise, which also pulls the point back onto the sphere's triangle.
     (s.ub.scale(z) + ortho(c_hat, s.ub).scale(sin_z)).normalize()

@@ -230,6 +230,15 @@ fn cases() -> Vec<Case> {
             p0,
         ),
         case(
+            "rectangle skewed (a parallelogram)",
+            rect(
+                Vec3::new(-0.6, -0.4, 1.5),
+                Vec3::new(1.2, 0.0, 0.1),
+                Vec3::new(0.5, 0.9, -0.2),
+            ),
+            p0,
+        ),
+        case(
             "rectangle world-far",
             rect_at(
                 far_p + Vec3::new(1.0, 1.0, 2.0),
@@ -319,10 +328,12 @@ fn ray_f64(light: &Light, p: Vec3, w: DVec3) -> Option<f64> {
             let n = ex.cross(ey);
             let t = (c - p).dot(n) / w.dot(n);
             let x = p + w * t - c;
-            let (s, u) = (
-                x.dot(ex) / ex.length_squared(),
-                x.dot(ey) / ey.length_squared(),
-            );
+            // (s, u) from the 2×2 Gram system: the edges of a parallelogram need not be
+            // orthogonal.
+            let (xx, xy, yy) = (ex.dot(ex), ex.dot(ey), ey.dot(ey));
+            let (dx, dy) = (x.dot(ex), x.dot(ey));
+            let det = xx * yy - xy * xy;
+            let (s, u) = ((dx * yy - dy * xy) / det, (dy * xx - dx * xy) / det);
             let edge = ex.length().min(ey.length());
             let tol = 1e-4 + 8.0 * f32::EPSILON as f64 * t * n.length() / (w.dot(n).abs() * edge);
             (t > 0.0 && (-tol..=1.0 + tol).contains(&s) && (-tol..=1.0 + tol).contains(&u))

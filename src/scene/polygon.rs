@@ -144,14 +144,15 @@ impl<V: Point3<Lane = L>, L: Math> PreparedTriangle<V> {
     }
 }
 
-/// A rectangle light `corner + s·ex + t·ey`, s, t ∈ [0, 1], with `ex` ⟂ `ey`, emitting radiance
-/// `le` on the side of its normal ex × ey.
+/// A parallelogram light `corner + s·ex + t·ey`, s, t ∈ [0, 1], emitting radiance `le` on the
+/// side of its normal ex × ey.
 ///
-/// It samples the rectangle's solid angle uniformly ([`SphericalRectangle`], Ureña, Fajardo and
-/// King 2013), with the area fallback where spherical sampling would lose accuracy (see
-/// [`SPHERICAL_RECTANGLE_MIN_SR`](crate::warp::SPHERICAL_RECTANGLE_MIN_SR)). Ureña's map needs
-/// a rectangle: edges further than 1e-5 (relative) from orthogonal make the light degenerate
-/// (pdf 0); split a general parallelogram into two [`TriangleLight`]s.
+/// A rectangle (ex ⟂ ey) is sampled uniformly in solid angle ([`SphericalRectangle`], Ureña,
+/// Fajardo and King 2013), with the area fallback below
+/// [`SPHERICAL_RECTANGLE_MIN_SR`](crate::warp::SPHERICAL_RECTANGLE_MIN_SR). Ureña's map needs a
+/// rectangle: a parallelogram whose edges are further than 1e-4 from orthogonal is sampled by
+/// area, with its exact converted pdf (or split it into two [`TriangleLight`]s, which are
+/// sampled in solid angle).
 ///
 /// A shading point within 1e-6 rad of the plane, zero edges and non-finite input give pdf 0.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -160,7 +161,7 @@ pub struct RectangleLight<V: Point3 = Vec3> {
     pub corner: V,
     /// The first edge.
     pub ex: V,
-    /// The second edge, orthogonal to the first.
+    /// The second edge (orthogonal to the first for a rectangle).
     pub ey: V,
     /// The emitted radiance (RGB).
     pub le: V,
@@ -175,7 +176,6 @@ pub struct PreparedRectangle<V: Point3 = Vec3> {
     ey: V3<V::Lane>,
     /// corner·(ex × ey), in f64 for the f32 lanes: negative on the emitting side.
     h: V::Lane,
-    valid: <V::Lane as crate::lane::Lane>::Mask,
     le: V3<V::Lane>,
 }
 
@@ -184,12 +184,6 @@ impl<V: Point3<Lane = L>, L: Math> RectangleLight<V> {
     #[inline]
     pub fn new(corner: V, ex: V, ey: V, le: V) -> Self {
         Self { corner, ex, ey, le }
-    }
-
-    /// True where the edges are orthogonal to 1e-5 relative, as Ureña's map needs.
-    #[inline(always)]
-    fn orthogonal(ex: V3<L>, ey: V3<L>) -> L::Mask {
-        ex.dot(ey).abs().le(L::c(1e-5) * ex.length() * ey.length())
     }
 
     /// The light prepared at shading point `p`.
@@ -202,7 +196,6 @@ impl<V: Point3<Lane = L>, L: Math> RectangleLight<V> {
             ex,
             ey,
             h: normal_dot(corner, ex, ey),
-            valid: Self::orthogonal(ex, ey),
             le: self.le.to_lanes(),
         }
     }
@@ -238,7 +231,7 @@ impl<V: Point3<Lane = L>, L: Math> RectangleLight<V> {
         let (s, t) = (u.x.clamp(L::ZERO, L::ONE), u.y.clamp(L::ZERO, L::ONE));
         let x = c + ex.scale(s) + ey.scale(t);
         let n = wide_cross(ex, ey);
-        let pdf = L::select(Self::orthogonal(ex, ey), L::ONE / n.length(), L::ZERO);
+        let pdf = L::ONE / n.length();
         area_sample(p.to_lanes(), x, n.normalize(), pdf, self.le.to_lanes())
     }
 
@@ -280,8 +273,7 @@ impl<V: Point3<Lane = L>, L: Math> PreparedRectangle<V> {
     /// together: pdf > 0 exactly where t < ∞.
     #[inline(always)]
     fn eval(&self, wi: V3<L>) -> (L, L) {
-        let pdf = L::select(self.valid, self.rect.pdf(wi), L::ZERO);
-        on_light(pdf, self.h / normal_dot(wi, self.ex, self.ey))
+        on_light(self.rect.pdf(wi), self.h / normal_dot(wi, self.ex, self.ey))
     }
 }
 

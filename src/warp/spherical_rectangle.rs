@@ -1,8 +1,9 @@
 //! Uniform sampling of the solid angle of a rectangle (Ureña, Fajardo, King 2013), with an exact
 //! area fallback where spherical sampling is not worth it.
 //!
-//! The rectangle is `corner + s·ex + t·ey`, s, t ∈ [0, 1], relative to the shading point; `ex`
-//! and `ey` must be orthogonal. The algorithm works in the rectangle's frame: x̂ along ex, ŷ along
+//! The rectangle is `corner + s·ex + t·ey`, s, t ∈ [0, 1], relative to the shading point, with
+//! `ex` ⟂ `ey`; a parallelogram whose edges are further than 1e-4 from orthogonal is sampled by
+//! area, exactly. The algorithm works in the rectangle's frame: x̂ along ex, ŷ along
 //! ey, the plane at distance d from the shading point, the rectangle [x0, x1] × [y0, y1] in it,
 //! and (0, 0) the foot of the perpendicular from the shading point.
 //!
@@ -470,9 +471,14 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
         & (x0 + x1 + y0 + y1 + d).is_finite()
         & n.dot(n).is_finite();
     let map_ok = (l0 + r1 + dist0 + dist1 + psi).is_finite() & l0.ge(L::ZERO) & r1.ge(L::ZERO);
+    // Ureña's map needs a rectangle: a parallelogram whose edges are further than 1e-4 from
+    // orthogonal (rounding leaves f32 edges about 1e-8 off) is sampled by area, whose pdf and
+    // inside test hold for any parallelogram.
+    let skewed = cos_xy.abs().gt(L::c(1e-4));
     let by_area = omega.lt(L::c(SPHERICAL_RECTANGLE_MIN_SR as f64))
         | omega.gt(L::c(SPHERICAL_RECTANGLE_MAX_SR as f64))
-        | !map_ok;
+        | !map_ok
+        | skewed;
     let area = nn.sqrt();
     Setup {
         given_corner,
@@ -633,7 +639,7 @@ impl<P: Point3> core::fmt::Debug for SphericalRectangle<P> {
 
 impl<P: Point3<Lane = L>, L: Math> SphericalRectangle<P> {
     /// The rectangle corner + s·ex + t·ey, s, t ∈ [0, 1], relative to the shading point, with
-    /// ex ⟂ ey.
+    /// ex ⟂ ey (a parallelogram with a cosine above 1e-4 between its edges is sampled by area).
     #[inline]
     pub fn new(corner: P, ex: P, ey: P) -> Self {
         Self {
@@ -760,7 +766,8 @@ pub fn urena_rectangle<P: Point2>(u: P, corner: P::Vec3, ex: P::Vec3, ey: P::Vec
 ///
 /// Ureña et al.'s map (2013) in a form without cancellation (see the module's documentation),
 /// uniform in solid angle with pdf 1/Ω, Ω by Van Oosterom–Strackee. Below
-/// [`SPHERICAL_RECTANGLE_MIN_SR`] or above [`SPHERICAL_RECTANGLE_MAX_SR`] it samples by area and
+/// [`SPHERICAL_RECTANGLE_MIN_SR`] or above [`SPHERICAL_RECTANGLE_MAX_SR`], and for a
+/// parallelogram whose edges are further than 1e-4 from orthogonal, it samples by area and
 /// returns the exact converted pdf.
 ///
 /// u is clamped to [0, 1]². Seen edge-on (the shading point within 1e-6 rad of the plane), or

@@ -109,6 +109,16 @@ impl<L: Lane> V3<L> {
         let len = self.length();
         Self::new(self.x / len, self.y / len, self.z / len)
     }
+    /// [`normalize`](Self::normalize) of the vector first divided by its largest component's
+    /// magnitude, so that its squared length can neither overflow nor fall into the subnormals
+    /// (where `normalize` of a vector 1e-22 long is 1e-3 off unit). Zero, a subnormal largest
+    /// component, ±∞ and NaN give NaN components.
+    #[inline(always)]
+    pub fn normalize_scaled(self) -> Self {
+        let m = self.x.abs().max(self.y.abs()).max(self.z.abs());
+        let m = L::select(m.ge(L::c(f32::MIN_POSITIVE as f64)), m, L::c(f64::NAN));
+        self.scale(L::ONE / m).normalize()
+    }
     /// Every component times `s`.
     #[inline(always)]
     pub fn scale(self, s: L) -> Self {

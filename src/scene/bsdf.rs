@@ -80,7 +80,8 @@ impl<V: Point3<Lane = L>, L: Math> Lambert<V> {
 /// both are 0), rescales u₀ to drive the chosen lobe, and draws either the cosine hemisphere or
 /// the Phong lobe cosⁿα about the mirror direction; the pdf is the mixture
 /// P·cos θ/π + (1 − P)·(n + 1)/(2π)·cosⁿα. n is clamped to [0,
-/// [`PHONG_N_MAX`](crate::warp::PHONG_N_MAX)]; a NaN exponent leaves the diffuse lobe alone.
+/// [`PHONG_N_MAX`](crate::warp::PHONG_N_MAX)]. A NaN exponent is a NaN parameter: `sample`
+/// gives a NaN direction with pdf 0, `pdf` gives 0, and `eval` the diffuse lobe alone.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Phong<V: Point3 = Vec3> {
     /// The diffuse reflectance kd (RGB).
@@ -139,7 +140,8 @@ impl<V: Point3<Lane = L>, L: Math> Phong<V> {
         let w_diffuse: V3<L> = cosine_hemisphere(v);
         let frame = Frame::from_normal(mirror(wo_l));
         let w_lobe = frame.to_world(phong_lobe(v, self.n));
-        let wi = V::from_lanes(V3::select(diffuse, w_diffuse, w_lobe).nan_where(u.any_nan()));
+        let nan = u.any_nan() | self.n.is_nan();
+        let wi = V::from_lanes(V3::select(diffuse, w_diffuse, w_lobe).nan_where(nan));
         BsdfSample {
             wi,
             f: self.eval(wo, wi),
@@ -154,12 +156,9 @@ impl<V: Point3<Lane = L>, L: Math> Phong<V> {
         let p = self.diffuse_probability();
         let lobe = lobe_pdf(wo, wi, self.n);
         let pdf = p.mul_add(cosine_hemisphere_pdf(wi.z), (L::ONE - p) * lobe);
-        // The diffuse part reads z alone: NaN elsewhere must still give 0.
-        L::select(
-            pdf.is_finite() & !wi.any_nan() & !wo.any_nan(),
-            pdf,
-            L::ZERO,
-        )
+        // The diffuse part reads z alone: NaN elsewhere, or in n, must still give 0.
+        let ok = pdf.is_finite() & !wi.any_nan() & !wo.any_nan() & !self.n.is_nan();
+        L::select(ok, pdf, L::ZERO)
     }
 }
 
@@ -189,7 +188,8 @@ fn lobe_pdf<L: Math>(wo: V3<L>, wi: V3<L>, n: L) -> L {
     let d = V3::new(wi.x + wo.x, wi.y + wo.y, wi.z - wo.z);
     let t = L::HALF * d.dot(d);
     let c = L::dot_wide([wi.x, wi.y, wi.z], [-wo.x, -wo.y, wo.z]);
-    let ln_cos = L::select(t.lt(L::HALF), (-t).ln_1p(), c.ln());
+    // cos α ≤ 1 (rounding, or directions not quite unit, can exceed it): ln cos α ≤ 0.
+    let ln_cos = L::select(t.lt(L::HALF), (-t).ln_1p(), c.ln()).min(L::ZERO);
     let p = phong_lobe_density(ln_cos, n);
     L::select(c.gt(L::ZERO) & n.eq(n), p, L::ZERO)
 }

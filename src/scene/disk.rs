@@ -135,7 +135,7 @@ impl<V: Point3<Lane = L>, L: Math> PreparedDisk<V> {
     /// [`DiskLight`]). u is clamped to [0, 1]²; NaN gives the dropped sample (pdf 0).
     #[inline]
     pub fn sample(&self, u: V::Vec2) -> LightSample<V> {
-        let wi = (self.d + self.offset(u.to_lanes())).normalize();
+        let wi = (self.d + self.offset(u.to_lanes())).normalize_scaled();
         let le = le_towards(self.h.lt(L::ZERO), self.le);
         let (pdf, t) = self.eval(wi);
         light_sample(wi, t, le, pdf)

@@ -249,7 +249,9 @@ impl<V: Point3<Lane = L>, L: Math> PreparedRectangle<V> {
     #[inline]
     pub fn sample(&self, u: V::Vec2) -> LightSample<V> {
         let (x, kept) = self.rect.sample(u.to_lanes());
-        let wi = x.normalize();
+        // The point may be far from unit length (a light 1e-22 away): normalise from a scale
+        // where its square cannot underflow.
+        let wi = x.normalize_scaled();
         let (pdf, t) = self.eval(wi);
         let pdf = L::select(kept.gt(L::ZERO), pdf, L::ZERO);
         light_sample(wi, t, le_towards(self.h.lt(L::ZERO), self.le), pdf)

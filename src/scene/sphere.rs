@@ -142,7 +142,7 @@ impl<V: Point3<Lane = L>, L: Math> PreparedSphere<V> {
         // From outside: the cone about the axis, in the axis's frame.
         let w_cone = self.frame.to_world(uniform_cone(u, self.h));
         // From inside: a point by area, its direction from the shading point.
-        let w_area = (self.d + uniform_sphere(u).scale(self.r)).normalize();
+        let w_area = (self.d + uniform_sphere(u).scale(self.r)).normalize_scaled();
         let wi = V3::select(self.outside, w_cone, w_area);
         let le = le_towards(self.outside, self.le);
         let (pdf, t) = self.eval(wi);

@@ -817,7 +817,7 @@ impl Sampler {
         }
         let param_nan = match s {
             Sampler::UniformCone { h } => h.is_nan(),
-            Sampler::PhongLobe { n } => n.is_nan(),
+            Sampler::PhongLobe { n } | Sampler::BsdfPhong { n, .. } => n.is_nan(),
             _ => false,
         };
         if u.is_nan() || param_nan {

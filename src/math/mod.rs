@@ -208,7 +208,7 @@ trait Wide:
 impl Wide for f64 {
     #[inline(always)]
     fn sqrt(self) -> f64 {
-        libm::sqrt(self)
+        crate::lane::sqrt_f64(self)
     }
 }
 

@@ -5,7 +5,7 @@ use core::f64::consts::PI;
 use glam::Vec3;
 
 use crate::frame::Frame;
-use crate::lane::{V2, V3};
+use crate::lane::{Mask, V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::scene::{AreaSample, LightSample, area_sample, le_towards, light_sample};
@@ -139,10 +139,20 @@ impl<V: Point3<Lane = L>, L: Math> PreparedSphere<V> {
     #[inline]
     pub fn sample(&self, u: V::Vec2) -> LightSample<V> {
         let u: V2<L> = u.to_lanes();
-        // From outside: the cone about the axis, in the axis's frame.
-        let w_cone = self.frame.to_world(uniform_cone(u, self.h));
+        // Each path only where some lane takes it (a predictable branch: the shading point
+        // decides). From outside: the cone about the axis, in the axis's frame.
+        let zero = V3::all(L::ZERO);
+        let w_cone = if self.outside.any() {
+            self.frame.to_world(uniform_cone(u, self.h))
+        } else {
+            zero
+        };
         // From inside: a point by area, its direction from the shading point.
-        let w_area = (self.d + uniform_sphere(u).scale(self.r)).normalize_scaled();
+        let w_area = if (!self.outside).any() {
+            (self.d + uniform_sphere(u).scale(self.r)).normalize_scaled()
+        } else {
+            zero
+        };
         let wi = V3::select(self.outside, w_cone, w_area);
         let le = le_towards(self.outside, self.le);
         let (pdf, t) = self.eval(wi);
@@ -203,11 +213,21 @@ impl<V: Point3<Lane = L>, L: Math> PreparedSphere<V> {
         // From inside: the far hit t, where |cos θ_l| = √disc / r, so the area pdf converts to
         // t²/(4πr√disc).
         let far = b + root;
-        let area = far * far * self.area_pdf * self.r / root;
+        let area = if (!self.outside).any() {
+            far * far * self.area_pdf * self.r / root
+        } else {
+            L::ZERO
+        };
+        // No lane outside: every lane's cone test is false anyway.
+        let cone = if self.outside.any() {
+            self.outside & self.in_cone(wi)
+        } else {
+            self.outside
+        };
         let (pdf, t, on) = (
             L::select(self.outside, self.cone_pdf, area),
             L::select(self.outside, near, far),
-            (self.outside & self.in_cone(wi)) | (!self.outside & far.gt(L::ZERO)),
+            cone | (!self.outside & far.gt(L::ZERO)),
         );
         let ok = self.valid
             & on

@@ -22,7 +22,9 @@ use crate::warp::triangle::{uniform_triangle, uniform_triangle_inverse};
 /// solid angle to 1e-6, is exact and cheaper to reason about.
 pub const SPHERICAL_TRIANGLE_MIN_SR: f32 = 1.0e-6;
 /// Above this solid angle (sr), close to a hemisphere, the triangle is sampled by area too: the
-/// spherical map's f32 error grows to 3e-6 at 5–6 sr and to 1.6e-5 beyond.
+/// spherical map's f32 direction error against its f64 instance is within 1e-6 up to 5.3 sr,
+/// 2.3e-6 at 5.9 sr and 1.1e-5 at 6.2 sr (the report's stability table: three vertices ever
+/// closer to the horizon).
 pub const SPHERICAL_TRIANGLE_MAX_SR: f32 = 6.0;
 
 /// Everything the sampler, pdf and inverse need, computed once per triangle.
@@ -43,10 +45,10 @@ struct Setup<L: Math> {
     /// Plane normal (b−a)×(c−a), unnormalised.
     n: V3<L>,
     omega: L,
-    /// π − α for an obtuse α, the interior angle at A, else δ = α − Ω/2 (positive in every
-    /// spherical triangle): the accurate term of sin(α − E/2).
-    angle0: L,
-    obtuse: L::Mask,
+    /// δ = α − Ω/2 (positive in every spherical triangle) and π − α, α the interior angle at
+    /// A: the accurate terms of sin(α − E/2) (see `arvo`).
+    delta: L,
+    pi_minus_alpha: L,
     /// 1 − cos and sin of the arc AB.
     one_minus_cos_c: L,
     sin_c: L,
@@ -119,12 +121,11 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     // nearly opposite A and C and put Ĉ, and samples on the edge AC, off the edge's plane.
     let t_ac = nac.cross(ua).normalize();
     // δ = α − Ω/2 from the half-angle excess formula at E = Ω (see `arvo`):
-    // tan δ = sin α / (cos α + tan(b/2) tan(c/2)), multiplied through by sin b sin c. For an
-    // obtuse α the map wants π − α instead, which f32 cannot recover from α near π.
+    // tan δ = sin α / (cos α + tan(b/2) tan(c/2)), multiplied through by sin b sin c; and π − α
+    // directly, which f32 cannot recover from α near π.
     let sbc = sin_b * sin_c;
-    let obtuse = cos_alpha.lt(L::ZERO);
     let delta = (sin_alpha * sbc).atan2(cos_alpha.mul_add(sbc, one_minus_cos_b * one_minus_cos_c));
-    let angle0 = L::select(obtuse, sin_alpha.atan2(-cos_alpha), delta);
+    let pi_minus_alpha = sin_alpha.atan2(-cos_alpha);
 
     // Collinear vertices can leave a rounding-sized normal, and a shading point in the plane a
     // rounding-sized triple product (with FMA, say), while VOS still reports up to 2π. Neither is
@@ -155,8 +156,8 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
         uc,
         n,
         omega,
-        angle0,
-        obtuse,
+        delta,
+        pi_minus_alpha,
         one_minus_cos_c,
         sin_c,
         one_minus_cos_b,
@@ -194,11 +195,14 @@ fn ortho<L: Math>(v: V3<L>, u: V3<L>) -> V3<L> {
 fn arvo<L: Math>(s: &Setup<L>, u: V2<L>) -> V3<L> {
     let half = u.x * s.omega * L::HALF;
     let (h1, _) = half.sin_cos();
-    // sin(α − E/2) as a sum of two non-negative angles, never a difference, which would cancel
-    // as E nears Ω with α close to Ω/2, or for α near π: sin(δ + (1 − u₀)Ω/2) for an acute α,
-    // sin(π − α + E/2) for an obtuse one.
-    let rest = L::select(s.obtuse, half, (L::ONE - u.x) * (s.omega * L::HALF));
-    let (h2, _) = (s.angle0 + rest).sin_cos();
+    // sin(α − E/2) as the sine of a sum of two non-negative angles, never a difference, which
+    // would cancel as E nears Ω with α close to Ω/2, or for α near π: δ + (1 − u₀)Ω/2 = α − E/2
+    // or (π − α) + E/2 = π − (α − E/2), whichever is at most π/2. Near π the sine loses its
+    // relative precision to the argument's rounding (2.8e-5 of it at 3.128 rad: 2.5e-6 of
+    // direction for a 5 sr triangle with an obtuse α at u₀ = 1).
+    let a1 = s.delta + (L::ONE - u.x) * (s.omega * L::HALF);
+    let a2 = s.pi_minus_alpha + half;
+    let (h2, _) = L::select(a1.le(a2), a1, a2).sin_cos();
     let x = s.one_minus_cos_c * h2.max(L::ZERO);
     let y = s.sin_c * h1;
     // Ĉ must not pass C: near u₀ = 1 rounding can carry b′ a few 1e-6 beyond the arc b, and the

@@ -88,23 +88,7 @@ impl<V: Point3<Lane = L>, L: Math> DiskLight<V> {
         }
     }
 
-    /// A direction towards the light from `p`: [`PreparedDisk::sample`] at `p`.
-    #[inline]
-    pub fn sample(&self, p: V, u: V::Vec2) -> LightSample<V> {
-        self.at(p).sample(u)
-    }
-
-    /// The pdf per steradian of `sample` at `p` in unit direction `wi`.
-    #[inline]
-    pub fn pdf(&self, p: V, wi: V) -> L {
-        self.at(p).pdf(wi)
-    }
-
-    /// The distance from `p` along unit `wi` to the light, ∞ for a miss.
-    #[inline]
-    pub fn hit(&self, p: V, wi: V) -> L {
-        self.at(p).hit(wi)
-    }
+    super::at_one_point!(PreparedDisk);
 
     /// A point uniform on the disk (the concentric map), its normal, Le towards `p` and the area
     /// pdf 1/(πr²).

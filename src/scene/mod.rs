@@ -47,6 +47,35 @@
 //! in a planar light's plane, and NaN in p, u or wi give pdf 0, distance ∞ and Le 0, with a finite
 //! direction; callers drop samples with pdf 0.
 
+/// The unprepared methods of a light, `sample(p, u)`, `pdf(p, wi)` and `hit(p, wi)`: the light
+/// prepared at `p` (`at(p)`) and one call of its method, so that each light has one algorithm.
+macro_rules! at_one_point {
+    ($prepared:ident) => {
+        #[doc = concat!(
+                    "A direction towards the light from `p`: [`",
+                    stringify!($prepared),
+                    "::sample`] at `p`."
+                )]
+        #[inline]
+        pub fn sample(&self, p: V, u: V::Vec2) -> LightSample<V> {
+            self.at(p).sample(u)
+        }
+
+        /// The pdf per steradian of `sample` at `p` in unit direction `wi`.
+        #[inline]
+        pub fn pdf(&self, p: V, wi: V) -> L {
+            self.at(p).pdf(wi)
+        }
+
+        /// The distance from `p` along unit `wi` to the light, ∞ for a miss.
+        #[inline]
+        pub fn hit(&self, p: V, wi: V) -> L {
+            self.at(p).hit(wi)
+        }
+    };
+}
+use at_one_point;
+
 mod bsdf;
 mod disk;
 mod polygon;

@@ -61,23 +61,7 @@ impl<V: Point3<Lane = L>, L: Math> TriangleLight<V> {
         }
     }
 
-    /// A direction towards the light from `p`: [`PreparedTriangle::sample`] at `p`.
-    #[inline]
-    pub fn sample(&self, p: V, u: V::Vec2) -> LightSample<V> {
-        self.at(p).sample(u)
-    }
-
-    /// The pdf per steradian of `sample` at `p` in unit direction `wi`.
-    #[inline]
-    pub fn pdf(&self, p: V, wi: V) -> L {
-        self.at(p).pdf(wi)
-    }
-
-    /// The distance from `p` along unit `wi` to the light, ∞ for a miss.
-    #[inline]
-    pub fn hit(&self, p: V, wi: V) -> L {
-        self.at(p).hit(wi)
-    }
+    super::at_one_point!(PreparedTriangle);
 
     /// A point uniform on the triangle (the low-distortion map of Heitz 2019), its unit normal,
     /// Le towards `p` and the area pdf 1/area.
@@ -200,23 +184,7 @@ impl<V: Point3<Lane = L>, L: Math> RectangleLight<V> {
         }
     }
 
-    /// A direction towards the light from `p`: [`PreparedRectangle::sample`] at `p`.
-    #[inline]
-    pub fn sample(&self, p: V, u: V::Vec2) -> LightSample<V> {
-        self.at(p).sample(u)
-    }
-
-    /// The pdf per steradian of `sample` at `p` in unit direction `wi`.
-    #[inline]
-    pub fn pdf(&self, p: V, wi: V) -> L {
-        self.at(p).pdf(wi)
-    }
-
-    /// The distance from `p` along unit `wi` to the light, ∞ for a miss.
-    #[inline]
-    pub fn hit(&self, p: V, wi: V) -> L {
-        self.at(p).hit(wi)
-    }
+    super::at_one_point!(PreparedRectangle);
 
     /// A point uniform on the rectangle, its unit normal, Le towards `p` and the area pdf
     /// 1/area.

@@ -163,7 +163,7 @@ fn clamp_u(u: f32) -> f32 {
 /// Selection in proportion to power: a cumulative table over a light slice, in storage the
 /// caller provides (no allocation), with one entry per light.
 ///
-/// Light i is chosen with pmf cdf[i] − cdf[i−1] (cdf[−1] = 0), both read from the table, so
+/// Light i is chosen with pmf cdfᵢ − cdfᵢ₋₁ (cdf₋₁ = 0), both read from the table, so
 /// [`select`](Self::select) and [`pmf`](Self::pmf) return the same number. A light of zero (or
 /// negative, or NaN) power is never chosen. If no light has positive finite power, the table is
 /// uniform.
@@ -211,7 +211,7 @@ impl<'a> PowerTable<'a> {
         self.cdf.is_empty()
     }
 
-    /// The light for u: the first i with u < cdf[i], by binary search. u is clamped to [0, 1);
+    /// The light for u: the first i with u < cdfᵢ, by binary search. u is clamped to [0, 1);
     /// NaN picks the first light of positive power. With no lights, index 0 and pmf 0.
     pub fn select(&self, u: f32) -> LightChoice {
         let u = clamp_u(u);

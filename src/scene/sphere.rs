@@ -94,23 +94,7 @@ impl<V: Point3<Lane = L>, L: Math> SphereLight<V> {
         }
     }
 
-    /// A direction towards the light from `p`: [`PreparedSphere::sample`] at `p`.
-    #[inline]
-    pub fn sample(&self, p: V, u: V::Vec2) -> LightSample<V> {
-        self.at(p).sample(u)
-    }
-
-    /// The pdf per steradian of `sample` at `p` in unit direction `wi`.
-    #[inline]
-    pub fn pdf(&self, p: V, wi: V) -> L {
-        self.at(p).pdf(wi)
-    }
-
-    /// The distance from `p` along unit `wi` to the light, ∞ for a miss.
-    #[inline]
-    pub fn hit(&self, p: V, wi: V) -> L {
-        self.at(p).hit(wi)
-    }
+    super::at_one_point!(PreparedSphere);
 
     /// A point uniform on the sphere's surface, its outward normal, Le towards `p` (0 where the
     /// point faces away from `p`) and the area pdf 1/(4πr²).

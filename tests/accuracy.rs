@@ -526,8 +526,6 @@ struct Tri {
     a: D3,
     b: D3,
     c: D3,
-    /// The direction bound: POINT_TOL unless the configuration says why not.
-    bound: f64,
 }
 
 /// Rounds the vertices to f32, so that the reference sees exactly the triangle the crate sees.
@@ -537,13 +535,6 @@ fn tri(label: impl Into<String>, (a, b, c): (D3, D3, D3)) -> Tri {
         a: d3(f3(a)),
         b: d3(f3(b)),
         c: d3(f3(c)),
-        bound: POINT_TOL,
-    }
-}
-
-impl Tri {
-    fn bound(self, bound: f64) -> Self {
-        Tri { bound, ..self }
     }
 }
 
@@ -653,7 +644,7 @@ fn spherical_triangle_matches_arvo() {
                 format!("u={u:?} got {pdf:e} want {:e}", 1.0 / omega)
             });
         }
-        out.push(m.check(t.bound));
+        out.push(m.check(POINT_TOL));
         out.push(mp.check(PDF_TOL));
     }
     assert_all(out);
@@ -710,7 +701,7 @@ fn spherical_triangle_by_area_below_and_above_thresholds() {
                 format!("u={u:?} got {pdf:e} want {want:e}")
             });
         }
-        out.push(m.check(t.bound));
+        out.push(m.check(POINT_TOL));
         out.push(mp.check(PDF_TOL));
     }
     assert_all(out);

@@ -51,11 +51,7 @@
 /// prepared at `p` (`at(p)`) and one call of its method, so that each light has one algorithm.
 macro_rules! at_one_point {
     ($prepared:ident) => {
-        #[doc = concat!(
-                    "A direction towards the light from `p`: [`",
-                    stringify!($prepared),
-                    "::sample`] at `p`."
-                )]
+        #[doc = concat!("[`", stringify!($prepared), "::sample`] at shading point `p`.")]
         #[inline]
         pub fn sample(&self, p: V, u: V::Vec2) -> LightSample<V> {
             self.at(p).sample(u)

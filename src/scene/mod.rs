@@ -11,8 +11,9 @@
 //! - `sample_area(p, u)` → [`AreaSample`]: a point on the light, its normal, Le towards p and
 //!   the pdf per unit area;
 //! - `pdf(p, wi)`: the solid-angle pdf of `sample`, in closed form with no ray cast. For every
-//!   sample it returns the same number, bit for bit, that `sample` returned: the sampler computes
-//!   its pdf by calling the same function at the very direction it returns;
+//!   kept sample (pdf > 0) it returns the same number, bit for bit, that `sample` returned: the
+//!   sampler computes its pdf by the same function at the very direction it returns (a dropped
+//!   sample, pdf 0, stands at +z, which may well be on the light);
 //! - `hit(p, wi)`: the distance along `wi` to the light, ∞ for a miss. It decides "hit" by the
 //!   same test as `pdf`, so the two never disagree on whether a direction is on the light, and
 //!   a sample's distance is `hit` at its direction;
@@ -30,10 +31,19 @@
 //! by a few of those. A sample placed exactly on a light's silhouette can therefore land just
 //! outside it. `pdf` and `hit` accept directions within a slack of a few ε·(1 + angular size)
 //! outside the silhouette (documented per light), so every sample keeps its pdf and its hit; a
-//! direction farther out gets pdf 0 and ∞. For lights much larger than the slack this changes
-//! nothing measurable (∫pdf dω = 1 within 1e-6); for the tiniest ones (a sphere with
-//! sin²θmax = 1e-12 spans 1e-6 rad) it widens what a BSDF-sampled ray can hit by the slack, an
-//! f32 limit that the f64 instance, whose slack scales with its own ε, does not share.
+//! direction farther out gets pdf 0 and ∞. For a sphere light 1e-2 rad across the band is 5e-5
+//! of its solid angle; for the tiniest lights (a sphere with sin²θmax = 1e-12 spans 2e-6 rad)
+//! it widens what a BSDF-sampled ray can hit by a large part of the light, an f32 limit that
+//! the f64 instance, whose slack scales with its own ε, does not share.
+//!
+//! # Choosing a light
+//!
+//! [`Light`] puts the four kinds in one slice. [`PowerTable`] chooses in proportion to power
+//! (π·area·luminance(Le)) from a cumulative table in storage the caller provides, and
+//! [`LightChoice::uniform`] with equal probability; either returns the index, its probability
+//! and u rescaled to drive the chosen light's sampler. The probability enters every pdf an
+//! estimator sees: [`LightSample::chosen_with`] for light samples, and `pmf(i)·pdf(p, wi)` for a
+//! BSDF sample whose ray `hit`s light i.
 //!
 //! # Widths
 //!

@@ -112,10 +112,15 @@ impl<V: Point3<Lane = L>, L: Math> Phong<V> {
     #[inline]
     pub fn eval(&self, wo: V, wi: V) -> V {
         let (wo, wi) = (wo.to_lanes(), wi.to_lanes());
-        let n = self.n;
+        V::from_lanes(self.eval_with(wo, wi, lobe_pdf(wo, wi, self.n)))
+    }
+
+    /// f from the lobe's density at (wo, wi), which `sample` shares with its pdf: it is most of
+    /// the cost (a logarithm and an exponential).
+    #[inline(always)]
+    fn eval_with(&self, wo: V3<L>, wi: V3<L>, lobe: L) -> V3<L> {
         // (n + 2)/(2π)·cosⁿα as the lobe's pdf times (n + 2)/(n + 1): one robust exp-log form.
-        let lobe = lobe_pdf(wo, wi, n);
-        let n = n.clamp(L::ZERO, L::c(crate::warp::PHONG_N_MAX as f64));
+        let n = self.n.clamp(L::ZERO, L::c(crate::warp::PHONG_N_MAX as f64));
         // A NaN exponent has no lobe (its pdf is 0): no specular term either.
         let spec = L::select(
             lobe.gt(L::ZERO),
@@ -123,7 +128,7 @@ impl<V: Point3<Lane = L>, L: Math> Phong<V> {
             L::ZERO,
         );
         let f = self.kd.to_lanes().scale(L::c(1.0 / PI)) + self.ks.to_lanes().scale(spec);
-        V::from_lanes(V3::select(above(wo, wi), f, V3::all(L::ZERO)))
+        V3::select(above(wo, wi), f, V3::all(L::ZERO))
     }
 
     /// A direction from the mixture of the two lobes, f there and its pdf. u is clamped to
@@ -141,11 +146,13 @@ impl<V: Point3<Lane = L>, L: Math> Phong<V> {
         let frame = Frame::from_normal(mirror(wo_l));
         let w_lobe = frame.to_world(phong_lobe(v, self.n));
         let nan = u.any_nan() | self.n.is_nan();
-        let wi = V::from_lanes(V3::select(diffuse, w_diffuse, w_lobe).nan_where(nan));
+        let wi = V3::select(diffuse, w_diffuse, w_lobe).nan_where(nan);
+        // f and pdf are `eval` and `pdf` at wi, sharing the lobe's density: the same bits.
+        let lobe = lobe_pdf(wo_l, wi, self.n);
         BsdfSample {
-            wi,
-            f: self.eval(wo, wi),
-            pdf: self.pdf(wo, wi),
+            wi: V::from_lanes(wi),
+            f: V::from_lanes(self.eval_with(wo_l, wi, lobe)),
+            pdf: self.pdf_with(wo_l, wi, lobe),
         }
     }
 
@@ -153,8 +160,13 @@ impl<V: Point3<Lane = L>, L: Math> Phong<V> {
     #[inline]
     pub fn pdf(&self, wo: V, wi: V) -> L {
         let (wo, wi) = (wo.to_lanes(), wi.to_lanes());
+        self.pdf_with(wo, wi, lobe_pdf(wo, wi, self.n))
+    }
+
+    /// The mixture pdf from the lobe's density at (wo, wi).
+    #[inline(always)]
+    fn pdf_with(&self, wo: V3<L>, wi: V3<L>, lobe: L) -> L {
         let p = self.diffuse_probability();
-        let lobe = lobe_pdf(wo, wi, self.n);
         let pdf = p.mul_add(cosine_hemisphere_pdf(wi.z), (L::ONE - p) * lobe);
         // The diffuse part reads z alone: NaN elsewhere, or in n, must still give 0.
         let ok = pdf.is_finite() & !wi.any_nan() & !wo.any_nan() & !self.n.is_nan();

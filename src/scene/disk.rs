@@ -8,7 +8,7 @@ use crate::frame::Frame;
 use crate::lane::{V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
-use crate::scene::{AreaSample, LightSample, area_sample, le_towards, light_sample};
+use crate::scene::{AreaSample, LightSample, area_sample, le_towards, light_sample, on_light};
 use crate::warp::concentric_disk;
 
 /// A disk light of radius `radius` about `center`, facing along `normal` (normalised on use), and
@@ -129,14 +129,14 @@ impl<V: Point3<Lane = L>, L: Math> PreparedDisk<V> {
     /// the disk, for a degenerate light and for NaN.
     #[inline]
     pub fn pdf(&self, wi: V) -> L {
-        self.pdf_lanes(wi.to_lanes())
+        self.eval(wi.to_lanes()).0
     }
 
     /// The distance along unit `wi` to the disk's plane where the ray meets the disk, ∞ for a
     /// miss, decided by the same test as [`pdf`](Self::pdf).
     #[inline]
     pub fn hit(&self, wi: V) -> L {
-        self.hit_lanes(wi.to_lanes())
+        self.eval(wi.to_lanes()).1
     }
 
     /// wi·n (in f64 for the f32 lanes), the distance t along wi to the plane, and whether the
@@ -164,16 +164,6 @@ impl<V: Point3<Lane = L>, L: Math> PreparedDisk<V> {
         (wn, t, on)
     }
 
-    #[inline(always)]
-    fn pdf_lanes(&self, wi: V3<L>) -> L {
-        self.eval(wi).0
-    }
-
-    #[inline(always)]
-    fn hit_lanes(&self, wi: V3<L>) -> L {
-        self.eval(wi).1
-    }
-
     /// The pdf and the hit distance of unit `wi` together, from one test of whether it is on the
     /// light: pdf > 0 exactly where t < ∞.
     #[inline(always)]
@@ -181,10 +171,6 @@ impl<V: Point3<Lane = L>, L: Math> PreparedDisk<V> {
         let (wn, t, on) = self.ray(wi);
         let c = wn.abs();
         let pdf = self.area_pdf * (self.h * self.h) / (c * c * c);
-        let ok = on & pdf.gt(L::ZERO) & pdf.is_finite() & t.is_finite();
-        (
-            L::select(ok, pdf, L::ZERO),
-            L::select(ok, t, L::c(f64::INFINITY)),
-        )
+        on_light(L::select(on, pdf, L::ZERO), t)
     }
 }

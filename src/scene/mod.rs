@@ -170,3 +170,14 @@ fn area_sample<V: Point3<Lane = L>, L: Math>(
         pdf: L::select(ok, pdf, L::ZERO),
     }
 }
+
+/// The one rule of every light's `eval`: (pdf, t) where the direction is on the light (pdf > 0
+/// and finite, t > 0 and finite), else (0, ∞), so that pdf > 0 exactly where t < ∞.
+#[inline(always)]
+fn on_light<L: Math>(pdf: L, t: L) -> (L, L) {
+    let ok = pdf.gt(L::ZERO) & pdf.is_finite() & t.gt(L::ZERO) & t.is_finite();
+    (
+        L::select(ok, pdf, L::ZERO),
+        L::select(ok, t, L::c(f64::INFINITY)),
+    )
+}

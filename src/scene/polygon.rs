@@ -9,7 +9,7 @@ use glam::Vec3;
 use crate::lane::V3;
 use crate::math::Math;
 use crate::point::{Point2, Point3};
-use crate::scene::{AreaSample, LightSample, area_sample, le_towards, light_sample};
+use crate::scene::{AreaSample, LightSample, area_sample, le_towards, light_sample, on_light};
 use crate::warp::{SphericalRectangle, SphericalTriangle, uniform_triangle};
 
 /// A triangle light with vertices `a`, `b`, `c`, emitting radiance `le` on the side of its
@@ -245,17 +245,6 @@ impl<V: Point3<Lane = L>, L: Math> PreparedRectangle<V> {
     fn eval(&self, wi: V3<L>) -> (L, L) {
         on_light(self.rect.pdf(wi), self.h / normal_dot(wi, self.ex, self.ey))
     }
-}
-
-/// (pdf, t) where the direction is on the light (pdf > 0 and finite, t > 0 and finite), else
-/// (0, ∞).
-#[inline(always)]
-fn on_light<L: Math>(pdf: L, t: L) -> (L, L) {
-    let ok = pdf.gt(L::ZERO) & pdf.is_finite() & t.gt(L::ZERO) & t.is_finite();
-    (
-        L::select(ok, pdf, L::ZERO),
-        L::select(ok, t, L::c(f64::INFINITY)),
-    )
 }
 
 /// w·(ex × ey), in f64 for the f32 lanes.

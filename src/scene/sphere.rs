@@ -8,7 +8,7 @@ use crate::frame::Frame;
 use crate::lane::{Mask, V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
-use crate::scene::{AreaSample, LightSample, area_sample, le_towards, light_sample};
+use crate::scene::{AreaSample, LightSample, area_sample, le_towards, light_sample, on_light};
 use crate::warp::{cone_h_from_sin2, uniform_cone, uniform_sphere};
 
 /// A spherical light of radius `radius` about `center`, emitting radiance `le` outwards.
@@ -148,14 +148,14 @@ impl<V: Point3<Lane = L>, L: Math> PreparedSphere<V> {
     /// degenerate light and for NaN.
     #[inline]
     pub fn pdf(&self, wi: V) -> L {
-        self.pdf_lanes(wi.to_lanes())
+        self.eval(wi.to_lanes()).0
     }
 
     /// The distance along unit `wi` to the light: the near hit from outside, the far one from
     /// inside; ∞ for a miss, decided by the same test as [`pdf`](Self::pdf).
     #[inline]
     pub fn hit(&self, wi: V) -> L {
-        self.hit_lanes(wi.to_lanes())
+        self.eval(wi.to_lanes()).1
     }
 
     /// The cosine of the direction with the axis, and the ray's discriminant r² − |q|², where
@@ -173,16 +173,6 @@ impl<V: Point3<Lane = L>, L: Math> PreparedSphere<V> {
         let axis = self.frame.n;
         let s = wi.cross(axis);
         wi.dot(axis).gt(L::ZERO) & s.dot(s).le(self.sin2_bound)
-    }
-
-    #[inline(always)]
-    fn pdf_lanes(&self, wi: V3<L>) -> L {
-        self.eval(wi).0
-    }
-
-    #[inline(always)]
-    fn hit_lanes(&self, wi: V3<L>) -> L {
-        self.eval(wi).1
     }
 
     /// The pdf and the hit distance of unit `wi` together, from one test of whether it is on the
@@ -213,16 +203,6 @@ impl<V: Point3<Lane = L>, L: Math> PreparedSphere<V> {
             L::select(self.outside, near, far),
             cone | (!self.outside & far.gt(L::ZERO)),
         );
-        let ok = self.valid
-            & on
-            & pdf.gt(L::ZERO)
-            & pdf.is_finite()
-            & t.ge(L::ZERO)
-            & t.is_finite()
-            & !wi.any_nan();
-        (
-            L::select(ok, pdf, L::ZERO),
-            L::select(ok, t, L::c(f64::INFINITY)),
-        )
+        on_light(L::select(self.valid & on & !wi.any_nan(), pdf, L::ZERO), t)
     }
 }

@@ -67,6 +67,7 @@
 extern crate std;
 
 pub mod camera;
+pub mod direct;
 #[cfg(feature = "rand")]
 pub mod distr;
 pub mod estimate;

@@ -296,6 +296,8 @@ pub struct OptimalMis {
     b: [f64; 2],
     /// Σ f/S: the balance heuristic's sum.
     balance: f64,
+    /// Σ p₁/S, Σ p₂/S: with `balance`, the residual sum for any α (it is linear in α).
+    q: [f64; 2],
 }
 
 impl OptimalMis {
@@ -326,6 +328,8 @@ impl OptimalMis {
             self.b[0] += terms[3];
             self.b[1] += terms[4];
             self.balance += g;
+            self.q[0] += q1;
+            self.q[1] += q2;
         }
     }
 
@@ -372,6 +376,19 @@ impl OptimalMis {
             Some([a1, a2]) => a1 + a2,
             None => self.balance_estimate(),
         }
+    }
+
+    /// The unbiased estimate from this accumulator's samples with α fitted on `pilot`'s, which
+    /// must be independent of them: α₁ + α₂ + Σ(f − α₁p₁ − α₂p₂)/S per round, as
+    /// [`FixedAlpha`] computes it (the residual is linear in α, so the sums kept here suffice).
+    /// Where `pilot`'s system is singular, α = 0: the balance estimate.
+    ///
+    /// Cross-fitting, two halves each the pilot of the other, gives an unbiased optimal-MIS
+    /// estimate from one set of samples with no pilot pass.
+    pub fn estimate_with_alpha_of(&self, pilot: &OptimalMis) -> f64 {
+        let [a1, a2] = pilot.alpha().unwrap_or([0.0, 0.0]);
+        let residual = self.balance - a1 * self.q[0] - a2 * self.q[1];
+        a1 + a2 + per_round(residual, self.samples, self.counts)
     }
 }
 

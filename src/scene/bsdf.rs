@@ -205,3 +205,36 @@ fn lobe_pdf<L: Math>(wo: V3<L>, wi: V3<L>, n: L) -> L {
     let p = phong_lobe_density(ln_cos, n);
     L::select(c.gt(L::ZERO) & n.eq(n), p, L::ZERO)
 }
+
+/// What the direct-lighting estimator needs of a BSDF, in the local frame: `eval`, `sample` and
+/// `pdf` as [`Lambert`] and [`Phong`] define them (f without the cosine; `sample` returns the
+/// pdf function's value at its direction, bit for bit).
+pub trait Bsdf<V: Point3> {
+    /// f(wo, wi).
+    fn eval(&self, wo: V, wi: V) -> V;
+    /// A direction, f there and its pdf per steradian.
+    fn sample(&self, wo: V, u: V::Vec2) -> BsdfSample<V>;
+    /// The pdf per steradian of `sample` at `wi`.
+    fn pdf(&self, wo: V, wi: V) -> V::Lane;
+}
+
+/// The trait forwards to the inherent methods, which stay callable without importing it.
+macro_rules! bsdf_trait {
+    ($($t:ident),*) => {$(
+        impl<V: Point3<Lane = L>, L: Math> Bsdf<V> for $t<V> {
+            #[inline]
+            fn eval(&self, wo: V, wi: V) -> V {
+                $t::eval(self, wo, wi)
+            }
+            #[inline]
+            fn sample(&self, wo: V, u: V::Vec2) -> BsdfSample<V> {
+                $t::sample(self, wo, u)
+            }
+            #[inline]
+            fn pdf(&self, wo: V, wi: V) -> L {
+                $t::pdf(self, wo, wi)
+            }
+        }
+    )*};
+}
+bsdf_trait!(Lambert, Phong);

@@ -88,7 +88,7 @@ mod polygon;
 mod select;
 mod sphere;
 
-pub use bsdf::{BsdfSample, Lambert, Phong};
+pub use bsdf::{Bsdf, BsdfSample, Lambert, Phong};
 pub use disk::{DiskLight, PreparedDisk};
 pub use polygon::{PreparedRectangle, PreparedTriangle, RectangleLight, TriangleLight};
 pub use select::{Light, LightChoice, PowerTable, PreparedLight, luminance};

@@ -92,10 +92,16 @@ impl<V: Point3<Lane = L>, L: Math> PreparedTriangle<V> {
         // The warp's own pdf is 0 for a sample it dropped (NaN u), whose stand-in direction may
         // well be on the light.
         let (wi, kept) = self.tri.sample(u.to_lanes());
-        let (h, _) = self.tri.plane();
         let (pdf, t) = self.eval(wi);
         let pdf = L::select(kept.gt(L::ZERO), pdf, L::ZERO);
-        light_sample(wi, t, le_towards(h.lt(L::ZERO), self.le), pdf)
+        light_sample(wi, t, self.le().to_lanes(), pdf)
+    }
+
+    /// The radiance that arrives from every direction on the light: Le where the shading point
+    /// is on the emitting side, else 0. Directions off the light (`hit` = ∞) receive nothing.
+    #[inline]
+    pub fn le(&self) -> V {
+        V::from_lanes(le_towards(self.tri.plane().0.lt(L::ZERO), self.le))
     }
 
     /// The pdf per steradian that [`sample`](Self::sample) returns unit direction `wi`: the
@@ -222,7 +228,14 @@ impl<V: Point3<Lane = L>, L: Math> PreparedRectangle<V> {
         let wi = x.normalize_scaled();
         let (pdf, t) = self.eval(wi);
         let pdf = L::select(kept.gt(L::ZERO), pdf, L::ZERO);
-        light_sample(wi, t, le_towards(self.h.lt(L::ZERO), self.le), pdf)
+        light_sample(wi, t, self.le().to_lanes(), pdf)
+    }
+
+    /// The radiance that arrives from every direction on the light: Le where the shading point
+    /// is on the emitting side, else 0. Directions off the light (`hit` = ∞) receive nothing.
+    #[inline]
+    pub fn le(&self) -> V {
+        V::from_lanes(le_towards(self.h.lt(L::ZERO), self.le))
     }
 
     /// The pdf per steradian that [`sample`](Self::sample) returns unit direction `wi`: the

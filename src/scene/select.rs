@@ -3,7 +3,7 @@
 
 use glam::Vec3;
 
-use crate::lane::Lane;
+use crate::lane::{Lane, V3};
 use crate::math::Math;
 use crate::point::Point3;
 use crate::scene::{
@@ -121,6 +121,38 @@ impl<V: Point3<Lane = L>, L: Math> PreparedLight<V> {
     #[inline]
     pub fn hit(&self, wi: V) -> L {
         each!(self, l => l.hit(wi))
+    }
+
+    /// The radiance arriving from every direction on the light (0 from behind it).
+    #[inline]
+    pub fn le(&self) -> V {
+        each!(self, l => l.le())
+    }
+}
+
+impl Light<Vec3> {
+    /// The same light in every lane of width `V`: `Light<Vec3x8>` for a packet whose lanes
+    /// share it, `Light<DVec3>` for the f64 reference. Each field is converted exactly (f32 to
+    /// f64 is exact), so lane i of the result equals this light bit for bit.
+    #[inline]
+    pub fn splat<V: Point3>(&self) -> Light<V> {
+        let s = |x: f32| V::Lane::c(f64::from(x));
+        let v = |x: Vec3| V::from_lanes(V3::new(s(x.x), s(x.y), s(x.z)));
+        match *self {
+            Self::Sphere(l) => Light::Sphere(SphereLight::new(v(l.center), s(l.radius), v(l.le))),
+            Self::Disk(l) => Light::Disk(DiskLight::new(
+                v(l.center),
+                v(l.normal),
+                s(l.radius),
+                v(l.le),
+            )),
+            Self::Triangle(l) => {
+                Light::Triangle(TriangleLight::new(v(l.v[0]), v(l.v[1]), v(l.v[2]), v(l.le)))
+            }
+            Self::Rectangle(l) => {
+                Light::Rectangle(RectangleLight::new(v(l.corner), v(l.ex), v(l.ey), v(l.le)))
+            }
+        }
     }
 }
 

@@ -138,9 +138,15 @@ impl<V: Point3<Lane = L>, L: Math> PreparedSphere<V> {
             zero
         };
         let wi = V3::select(self.outside, w_cone, w_area);
-        let le = le_towards(self.outside, self.le);
         let (pdf, t) = self.eval(wi);
-        light_sample(wi, t, le, pdf)
+        light_sample(wi, t, self.le().to_lanes(), pdf)
+    }
+
+    /// The radiance that arrives from every direction on the light: Le where the shading point
+    /// is on the emitting side, else 0. Directions off the light (`hit` = ∞) receive nothing.
+    #[inline]
+    pub fn le(&self) -> V {
+        V::from_lanes(le_towards(self.outside, self.le))
     }
 
     /// The pdf per steradian that [`sample`](Self::sample) returns unit direction `wi`: 1/(2πh)

@@ -94,6 +94,7 @@
 
 mod cap;
 mod chi2;
+pub mod direct;
 mod gamma;
 mod lanes;
 pub mod mis1d;

@@ -59,7 +59,8 @@
 //!
 //! The estimate is finite and never NaN: a shading point with n·ωo ≤ 0 (or NaN), no lights,
 //! lights of zero radiance, degenerate lights and a shading point on or inside a light give 0
-//! (or the finite part of the sum); a sample whose contribution is not finite is dropped.
+//! (or the finite part of the sum); a sample whose contribution is not finite is dropped, and
+//! an estimate whose sum overflows f32 (radiance near f32::MAX) is 0.
 //! Sample counts are capped at [`MAX_SAMPLES`] each.
 
 use glam::{Vec2, Vec3};
@@ -112,9 +113,10 @@ pub enum Strategy {
     /// by the balance heuristic (the mixture density).
     OneSampleMis,
     /// The samples of [`MisBalance`](Self::MisBalance), combined by optimal MIS (Kondapaneni
-    /// et al. 2019) with α fitted per channel from this estimate's own samples, the balance
-    /// heuristic where the fit is singular. Consistent: its bias is of order 1/N (see
-    /// [`mis::OptimalMis`]).
+    /// et al. 2019), cross-fitted: α from one half of the samples weights the other half, per
+    /// channel; the balance heuristic with fewer than two samples of either technique. Unbiased when the samples of
+    /// an estimate are independent (see `Estimator::optimal`). Its weights can be negative (the
+    /// control variate), so one estimate can be negative; the mean is not.
     OptimalMis,
     /// Resampled importance sampling (Talbot et al. 2005): N light-sampled candidates weighted
     /// by their unshadowed contribution's luminance, one of them kept, one shadow ray.
@@ -432,7 +434,8 @@ where
         Strategy::OptimalMis => e.optimal(),
         Strategy::Ris => e.ris(),
     };
-    let l = V3::select(e.valid & !sum.any_nan(), sum, V3::all(V::Lane::ZERO));
+    let finite = sum.x.is_finite() & sum.y.is_finite() & sum.z.is_finite();
+    let l = V3::select(e.valid & finite, sum, V3::all(V::Lane::ZERO));
     Estimate {
         radiance: V::from_lanes(l.canon()),
         shadow_rays: e.rays,

@@ -8,6 +8,7 @@
 //! and the disk indicator (see `sequences.rs`). `-- --quick` is a shorter run for CI;
 //! `-- --json PATH` also writes the numbers as JSON.
 
+mod direct;
 mod estimators;
 mod plain;
 mod sequences;
@@ -488,6 +489,49 @@ fn main() {
         );
     }
 
+    let direct_rows = direct::direct(&cfg);
+    println!(
+        "\ndirect lighting (mcsample::direct): N = {} + {} samples per estimate, independent",
+        direct::N,
+        direct::N
+    );
+    println!(
+        "  samples, unit visibility; bias in standard errors of the mean of {} estimates;",
+        direct_rows.first().map_or(0, |r| r.run.estimates)
+    );
+    println!(
+        "  relative RMSE of one estimate; x8 ns per estimate per lane; efficiency 1/(MSE·time)"
+    );
+    println!(
+        "  relative to the best single strategy (uniform, light or BSDF sampling) of the scene:"
+    );
+    println!(
+        "{:<20} {:<18} {:>11} {:>8} {:>10} {:>9} {:>9} {:>7} {:>9}",
+        "scene",
+        "strategy",
+        "reference",
+        "bias σ",
+        "rel RMSE",
+        "x8 ns",
+        "scalar ns",
+        "rays",
+        "eff/best"
+    );
+    for r in &direct_rows {
+        println!(
+            "{:<20} {:<18} {:>11.5e} {:>8} {:>10.3e} {:>9.0} {:>9.0} {:>7.2} {:>9.3}",
+            r.scene,
+            r.strategy,
+            r.reference,
+            r.bias_sigma().map_or("-".into(), |b| format!("{b:.2}")),
+            r.run.rel_rmse,
+            r.ns,
+            r.scalar_ns,
+            r.run.shadow_rays,
+            r.vs_best_single
+        );
+    }
+
     let (copy_ns, cos_ns) = streaming(&cfg);
     println!(
         "\nstreaming ({} points): copy kernel {copy_ns:.3} ns/pt, x8 cosine_hemisphere {cos_ns:.3} ns/pt, ratio {:.2}",
@@ -580,6 +624,29 @@ fn main() {
                         esc(r.estimator),
                         num(r.variance),
                         num(r.vs_best_single)
+                    ))
+                    .collect(),
+            ),
+            array(
+                "direct",
+                direct_rows
+                    .iter()
+                    .map(|r| format!(
+                        "{{\"scene\": \"{}\", \"strategy\": \"{}\", \"reference\": {}, \"mean\": {}, \"stderr\": {}, \"bias_sigma\": {}, \"rel_rmse\": {}, \"ns_per_estimate\": {}, \"scalar_ns_per_estimate\": {}, \"visibility_calls\": {}, \"efficiency\": {}, \"efficiency_vs_best_single\": {}, \"estimates\": {}, \"samples_per_estimate\": {}}}",
+                        esc(&r.scene),
+                        r.strategy,
+                        num(r.reference),
+                        num(r.run.mean),
+                        num(r.run.stderr),
+                        num(r.bias_sigma().unwrap_or(f64::NAN)),
+                        num(r.run.rel_rmse),
+                        num(r.ns),
+                        num(r.scalar_ns),
+                        num(r.run.shadow_rays),
+                        num(r.efficiency),
+                        num(r.vs_best_single),
+                        r.run.estimates,
+                        2 * direct::N
                     ))
                     .collect(),
             ),

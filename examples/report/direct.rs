@@ -1,0 +1,121 @@
+//! The direct-lighting table: every strategy of `mcsample::direct` on every scene of
+//! `verify::direct` (analytic, quadrature, the lecture's 4 × 4 MIS grid), at N = 64 + 64
+//! samples per estimate with independent samples and unit visibility. Per row: the mean, its
+//! standard error and bias in σ, the relative RMSE of one estimate, the time per estimate (the
+//! x8 path per lane, and the scalar path), the shadow rays, and the efficiency 1/(rel MSE × time)
+//! relative to the best single strategy of the scene.
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use glam::Vec3;
+use mcsample::direct::{self, Config as DirectConfig, Generator, Lights, Sequence, Strategy};
+use mcsample::verify::direct::{
+    DirectRun, DirectScene, analytic_scenes, grid_scenes, quadrature_scenes, run,
+};
+
+use crate::Config;
+
+/// Samples per technique in one estimate.
+pub const N: u32 = 64;
+
+pub struct DirectRow {
+    pub scene: String,
+    pub strategy: &'static str,
+    pub reference: f64,
+    pub run: DirectRun,
+    /// x8 path, ns per estimate (per lane).
+    pub ns: f64,
+    /// Scalar path, ns per estimate.
+    pub scalar_ns: f64,
+    /// 1/(rel MSE × ns).
+    pub efficiency: f64,
+    /// Efficiency over the best single strategy's of the same scene.
+    pub vs_best_single: f64,
+}
+
+impl DirectRow {
+    /// (mean − reference)/stderr; `None` where every estimate was equal (no sample reached the
+    /// light, so the standard error is 0 and says nothing).
+    pub fn bias_sigma(&self) -> Option<f64> {
+        (self.run.stderr > 0.0).then(|| self.run.bias_sigma(self.reference))
+    }
+}
+
+const SINGLE: [Strategy; 6] = [
+    Strategy::UniformThetaPhi,
+    Strategy::UniformHemisphere,
+    Strategy::CosineHemisphere,
+    Strategy::LightArea,
+    Strategy::LightSolidAngle,
+    Strategy::Bsdf,
+];
+
+/// The scalar path's ns per estimate over `count` estimates.
+fn scalar_ns(scene: &DirectScene, strategy: Strategy, config: DirectConfig, count: u32) -> f64 {
+    let lights = Lights::uniform(&scene.lights);
+    let mut visible = |_: Vec3, _: Vec3| true;
+    let t = Instant::now();
+    for e in 0..count {
+        let mut s = Sequence {
+            first: e * config.samples(),
+            seed: 3,
+            generator: Generator::Independent,
+        };
+        black_box(direct::estimate(
+            strategy,
+            &lights,
+            &scene.material,
+            black_box(scene.at),
+            config,
+            &mut s,
+            &mut visible,
+        ));
+    }
+    t.elapsed().as_secs_f64() * 1e9 / f64::from(count)
+}
+
+pub fn direct(cfg: &Config) -> Vec<DirectRow> {
+    let estimates: u64 = if cfg.quick { 1024 } else { 4096 };
+    let config = DirectConfig::new(N, N);
+    let mut scenes = analytic_scenes();
+    scenes.extend(quadrature_scenes());
+    scenes.extend(grid_scenes());
+    let mut rows = Vec::new();
+    for (k, scene) in scenes.iter().enumerate() {
+        let first = rows.len();
+        for strategy in Strategy::ALL {
+            let t = Instant::now();
+            let r = run(
+                scene,
+                strategy,
+                config,
+                estimates,
+                (Generator::Independent, 1000 + k as u32),
+            );
+            let ns = t.elapsed().as_secs_f64() * 1e9 / r.estimates as f64;
+            let scalar = scalar_ns(scene, strategy, config, (estimates / 8) as u32);
+            rows.push(DirectRow {
+                scene: scene.name.clone(),
+                strategy: strategy.name(),
+                reference: scene.reference,
+                efficiency: 1.0 / (r.rel_rmse * r.rel_rmse * ns),
+                run: r,
+                ns,
+                scalar_ns: scalar,
+                vs_best_single: 0.0,
+            });
+        }
+        let best = rows[first..]
+            .iter()
+            .zip(Strategy::ALL)
+            .filter(|(_, s)| SINGLE.contains(s))
+            .map(|(r, _)| r.efficiency)
+            .filter(|e| e.is_finite())
+            .fold(0.0, f64::max);
+        for r in &mut rows[first..] {
+            r.vs_best_single = r.efficiency / best;
+        }
+    }
+    rows
+}

@@ -346,7 +346,11 @@ fn main() {
     }
     let cpu = cpu_name();
     let feats = target_features();
-    println!("mcsample report{}", if cfg.quick { " (quick)" } else { "" });
+    println!(
+        "mcsample {} report{}",
+        env!("CARGO_PKG_VERSION"),
+        if cfg.quick { " (quick)" } else { "" }
+    );
     println!("  CPU: {cpu}");
     println!("  target features: {}", feats.join(", "));
     println!(
@@ -551,7 +555,8 @@ fn main() {
         };
         write!(
             s,
-            "{{\"build\": {{\"target_features\": [{}], \"cpu\": \"{}\"}}, ",
+            "{{\"build\": {{\"version\": \"{}\", \"target_features\": [{}], \"cpu\": \"{}\"}}, ",
+            env!("CARGO_PKG_VERSION"),
             feats
                 .iter()
                 .map(|f| format!("\"{f}\""))

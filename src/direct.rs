@@ -44,7 +44,7 @@
 //! prepared, further ones are prepared at each use (the same numbers, more time).
 //!
 //! With `Config::roulette` = τ > 0, a shadow ray whose weighted unoccluded contribution has
-//! luminance y < τ is traced with probability q = max(y/τ, [`ROULETTE_Q_MIN`]) and its
+//! luminance y < τ is traced with probability q = max(y/τ, [`ROULETTE_Q_MIN`](crate::estimate::ROULETTE_Q_MIN)) and its
 //! contribution divided by q (Russian roulette, unbiased): the expected number of rays traced
 //! falls by Σ(1 − q) over the samples below τ.
 //!

@@ -124,25 +124,12 @@ impl<V: Point3<Lane = L>, L: Math> PreparedDisk<V> {
         light_sample(wi, t, self.le().to_lanes(), pdf)
     }
 
-    /// The radiance that arrives from every direction on the light: Le where the shading point
-    /// is on the emitting side, else 0. Directions off the light (`hit` = ∞) receive nothing.
-    #[inline]
-    pub fn le(&self) -> V {
-        V::from_lanes(le_towards(self.h.lt(L::ZERO), self.le))
-    }
+    super::from_eval!();
 
-    /// The pdf per steradian that [`sample`](Self::sample) returns unit direction `wi`; 0 off
-    /// the disk, for a degenerate light and for NaN.
-    #[inline]
-    pub fn pdf(&self, wi: V) -> L {
-        self.eval(wi.to_lanes()).0
-    }
-
-    /// The distance along unit `wi` to the disk's plane where the ray meets the disk, ∞ for a
-    /// miss, decided by the same test as [`pdf`](Self::pdf).
-    #[inline]
-    pub fn hit(&self, wi: V) -> L {
-        self.eval(wi.to_lanes()).1
+    /// The shading point is in front of the disk.
+    #[inline(always)]
+    fn front(&self) -> L::Mask {
+        self.h.lt(L::ZERO)
     }
 
     /// wi·n (in f64 for the f32 lanes), the distance t along wi to the plane, and whether the

@@ -82,6 +82,43 @@ macro_rules! at_one_point {
 }
 use at_one_point;
 
+/// The methods every prepared light derives from its one `eval(wi) -> (pdf, t)` and its
+/// `front()` (the shading point is on the emitting side): `pdf`, `hit`, both at once, and `le`,
+/// so that the four lights answer these questions by one rule.
+macro_rules! from_eval {
+    () => {
+        /// The pdf per steradian with which `sample` returns unit direction `wi` (the function
+        /// the sampler itself calls); 0 off the light, for a degenerate light and for NaN.
+        #[inline]
+        pub fn pdf(&self, wi: V) -> L {
+            self.eval(wi.to_lanes()).0
+        }
+
+        /// The distance along unit `wi` to the light, ∞ for a miss, decided by the same test as
+        /// `pdf`.
+        #[inline]
+        pub fn hit(&self, wi: V) -> L {
+            self.eval(wi.to_lanes()).1
+        }
+
+        /// `pdf` and `hit` at `wi` from one evaluation, as a BSDF sample's MIS weight and its
+        /// shadow ray need both.
+        #[inline]
+        pub fn pdf_hit(&self, wi: V) -> (L, L) {
+            self.eval(wi.to_lanes())
+        }
+
+        /// The radiance that arrives from every direction on the light: Le where the shading
+        /// point is on the emitting side, else 0. Directions off the light (`hit` = ∞) receive
+        /// nothing.
+        #[inline]
+        pub fn le(&self) -> V {
+            V::from_lanes(le_towards(self.front(), self.le))
+        }
+    };
+}
+use from_eval;
+
 mod bsdf;
 mod disk;
 mod polygon;

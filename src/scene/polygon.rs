@@ -97,25 +97,12 @@ impl<V: Point3<Lane = L>, L: Math> PreparedTriangle<V> {
         light_sample(wi, t, self.le().to_lanes(), pdf)
     }
 
-    /// The radiance that arrives from every direction on the light: Le where the shading point
-    /// is on the emitting side, else 0. Directions off the light (`hit` = ∞) receive nothing.
-    #[inline]
-    pub fn le(&self) -> V {
-        V::from_lanes(le_towards(self.tri.plane().0.lt(L::ZERO), self.le))
-    }
+    super::from_eval!();
 
-    /// The pdf per steradian that [`sample`](Self::sample) returns unit direction `wi`: the
-    /// spherical triangle's, the same function the sampler calls.
-    #[inline]
-    pub fn pdf(&self, wi: V) -> L {
-        self.eval(wi.to_lanes()).0
-    }
-
-    /// The distance along unit `wi` to the triangle, ∞ for a miss, decided by the same test as
-    /// [`pdf`](Self::pdf).
-    #[inline]
-    pub fn hit(&self, wi: V) -> L {
-        self.eval(wi.to_lanes()).1
+    /// The shading point is on the side of the normal.
+    #[inline(always)]
+    fn front(&self) -> L::Mask {
+        self.tri.plane().0.lt(L::ZERO)
     }
 
     /// The spherical triangle's pdf of unit `wi` and the distance h/(wi·n) to the plane (wi·n
@@ -231,25 +218,12 @@ impl<V: Point3<Lane = L>, L: Math> PreparedRectangle<V> {
         light_sample(wi, t, self.le().to_lanes(), pdf)
     }
 
-    /// The radiance that arrives from every direction on the light: Le where the shading point
-    /// is on the emitting side, else 0. Directions off the light (`hit` = ∞) receive nothing.
-    #[inline]
-    pub fn le(&self) -> V {
-        V::from_lanes(le_towards(self.h.lt(L::ZERO), self.le))
-    }
+    super::from_eval!();
 
-    /// The pdf per steradian that [`sample`](Self::sample) returns unit direction `wi`: the
-    /// spherical rectangle's, the same function the sampler calls.
-    #[inline]
-    pub fn pdf(&self, wi: V) -> L {
-        self.eval(wi.to_lanes()).0
-    }
-
-    /// The distance along unit `wi` to the rectangle, ∞ for a miss, decided by the same test as
-    /// [`pdf`](Self::pdf).
-    #[inline]
-    pub fn hit(&self, wi: V) -> L {
-        self.eval(wi.to_lanes()).1
+    /// The shading point is on the side of the normal.
+    #[inline(always)]
+    fn front(&self) -> L::Mask {
+        self.h.lt(L::ZERO)
     }
 
     /// The spherical rectangle's pdf of unit `wi` and the distance h/(wi·n) to the plane,

@@ -123,6 +123,12 @@ impl<V: Point3<Lane = L>, L: Math> PreparedLight<V> {
         each!(self, l => l.hit(wi))
     }
 
+    /// `pdf` and `hit` at `wi` from one evaluation.
+    #[inline]
+    pub fn pdf_hit(&self, wi: V) -> (L, L) {
+        each!(self, l => l.pdf_hit(wi))
+    }
+
     /// The radiance arriving from every direction on the light (0 from behind it).
     #[inline]
     pub fn le(&self) -> V {

@@ -142,26 +142,12 @@ impl<V: Point3<Lane = L>, L: Math> PreparedSphere<V> {
         light_sample(wi, t, self.le().to_lanes(), pdf)
     }
 
-    /// The radiance that arrives from every direction on the light: Le where the shading point
-    /// is on the emitting side, else 0. Directions off the light (`hit` = ∞) receive nothing.
-    #[inline]
-    pub fn le(&self) -> V {
-        V::from_lanes(le_towards(self.outside, self.le))
-    }
+    super::from_eval!();
 
-    /// The pdf per steradian that [`sample`](Self::sample) returns unit direction `wi`: 1/(2πh)
-    /// inside the cone from outside, the converted area pdf from inside; 0 off the light, for a
-    /// degenerate light and for NaN.
-    #[inline]
-    pub fn pdf(&self, wi: V) -> L {
-        self.eval(wi.to_lanes()).0
-    }
-
-    /// The distance along unit `wi` to the light: the near hit from outside, the far one from
-    /// inside; ∞ for a miss, decided by the same test as [`pdf`](Self::pdf).
-    #[inline]
-    pub fn hit(&self, wi: V) -> L {
-        self.eval(wi.to_lanes()).1
+    /// The shading point is outside the sphere, which emits outwards.
+    #[inline(always)]
+    fn front(&self) -> L::Mask {
+        self.outside
     }
 
     /// The cosine of the direction with the axis, and the ray's discriminant r² − |q|², where
@@ -183,6 +169,8 @@ impl<V: Point3<Lane = L>, L: Math> PreparedSphere<V> {
 
     /// The pdf and the hit distance of unit `wi` together, from one test of whether it is on the
     /// light, so that the two can never disagree: (pdf, t) with pdf > 0 exactly where t < ∞.
+    /// From outside, 1/(2πh) inside the cone and the near hit; from inside, the converted area
+    /// pdf and the far hit.
     #[inline(always)]
     fn eval(&self, wi: V3<L>) -> (L, L) {
         let (b, disc) = self.ray(wi);

@@ -378,6 +378,8 @@ pub trait DirectLane: Math + Lane32 + sealed::Sealed {
     fn lane(self, i: usize) -> f32;
     /// The lanes f(0), f(1), ….
     fn from_fn(f: impl FnMut(usize) -> f32) -> Self;
+    /// The number of lanes set in `m`.
+    fn count(m: Self::Mask) -> u32;
 }
 
 impl DirectLane for f32 {
@@ -390,6 +392,10 @@ impl DirectLane for f32 {
     fn from_fn(mut f: impl FnMut(usize) -> f32) -> Self {
         f(0)
     }
+    #[inline(always)]
+    fn count(m: bool) -> u32 {
+        u32::from(m)
+    }
 }
 
 impl DirectLane for F32x8 {
@@ -401,6 +407,10 @@ impl DirectLane for F32x8 {
     #[inline(always)]
     fn from_fn(f: impl FnMut(usize) -> f32) -> Self {
         F32x8::new(core::array::from_fn(f))
+    }
+    #[inline(always)]
+    fn count(m: F32x8) -> u32 {
+        m.to_bitmask().count_ones()
     }
 }
 
@@ -461,6 +471,8 @@ struct Estimator<'a, 's, V: Point3, B, S, F> {
     samples: &'s mut S,
     visibility: &'s mut F,
     cache: Cache<V>,
+    /// Where a light beyond the cache is prepared for one use.
+    spare: Option<PreparedLight<V>>,
     rays: u32,
 }
 
@@ -510,6 +522,7 @@ where
             samples,
             visibility,
             cache: [None; PREPARED_LIGHTS],
+            spare: None,
             rays: 0,
         }
     }
@@ -518,26 +531,38 @@ where
         self.samples.get(s, pair).to_lanes()
     }
 
-    /// Light `j` prepared at the shading point.
-    fn prepared(&mut self, j: usize) -> PreparedLight<V> {
-        let (lights, p) = (self.lights.lights, V::from_lanes(self.p));
-        let prepare = |l: &Light| l.splat::<V>().at(p);
-        match (self.cache.get_mut(j), lights.get(j)) {
-            (Some(slot), Some(l)) => *slot.get_or_insert_with(|| prepare(l)),
-            (None, Some(l)) => prepare(l),
-            // Out of range: a light that is never on any direction.
-            _ => Light::Sphere(scene::SphereLight::new(
-                V::from_lanes(V3::all(L::ZERO)),
-                L::ZERO,
-                V::from_lanes(V3::all(L::ZERO)),
-            ))
-            .at(p),
+    /// Light `j` prepared at the shading point, by reference: a prepared packet light is large
+    /// (a triangle's is over a kilobyte), and it is read for every sample.
+    fn prepared(&mut self, j: usize) -> &PreparedLight<V> {
+        let p = V::from_lanes(self.p);
+        // Out of range (never asked): a light that is on no direction.
+        let dark = Light::Sphere(scene::SphereLight::new(Vec3::ZERO, 0.0, Vec3::ZERO));
+        let light = self.lights.lights.get(j).copied().unwrap_or(dark);
+        let prepare = || light.splat::<V>().at(p);
+        match self.cache.get_mut(j) {
+            Some(slot) => slot.get_or_insert_with(prepare),
+            None => self.spare.insert(prepare()),
+        }
+    }
+
+    /// For each light that some lane chose (`index`, a float), `f(self, j, lanes that chose j)`:
+    /// one pass per distinct light, so that lanes may choose different lights.
+    fn for_chosen(&mut self, index: L, mut f: impl FnMut(&mut Self, usize, L::Mask)) {
+        for j in 0..self.lights.lights.len() {
+            let m = index.eq(L::c(j as f64));
+            if m.any() {
+                f(self, j, m);
+            }
         }
     }
 
     /// f·cos θ at world direction `wi` (0 below the horizon).
     fn fcos(&self, wi: V3<L>) -> V3<L> {
-        let wl = self.frame.to_local(wi);
+        self.fcos_local(self.frame.to_local(wi))
+    }
+
+    /// f·cos θ at local direction `wl`.
+    fn fcos_local(&self, wl: V3<L>) -> V3<L> {
         let f = self.bsdf.eval(V::from_lanes(self.wo), V::from_lanes(wl));
         f.to_lanes().scale(wl.z.max(L::ZERO))
     }
@@ -574,8 +599,7 @@ where
         let vis = self
             .visibility
             .visible(go, V::from_lanes(self.p), V::from_lanes(to));
-        let traced = L::select(go, L::ONE, L::ZERO);
-        self.rays += (0..L::WIDTH).map(|i| traced.lane(i) as u32).sum::<u32>();
+        self.rays += L::count(go);
         V3::select(vis & go, c.scale(k), V3::all(L::ZERO))
     }
 
@@ -592,16 +616,16 @@ where
         if !(luminance(fcos).gt(L::ZERO)).any() {
             return sum;
         }
+        let wv = V::from_lanes(wi);
         for j in 0..self.lights.lights.len() {
+            let pmf = L::c(f64::from(self.lights.pmf(j)));
             let l = self.prepared(j);
-            let wv = V::from_lanes(wi);
-            let t = l.hit(wv);
+            let (pdf, t) = l.pdf_hit(wv);
             let on = t.is_finite();
             if !on.any() {
                 continue;
             }
-            let pdf = l.pdf(wv) * L::c(f64::from(self.lights.pmf(j)));
-            let c = mul(fcos, l.le().to_lanes()).scale(weight(pdf));
+            let c = mul(fcos, l.le().to_lanes()).scale(weight(pdf * pmf));
             let c = V3::select(on, c, V3::all(L::ZERO));
             let to = self.p + wi.scale(L::select(on, t, L::ZERO));
             sum = sum + self.shadow(c, to, ru);
@@ -616,38 +640,20 @@ where
         let mut sum = V3::all(L::ZERO);
         for s in 0..n {
             let (u, ru) = (self.u(s, 0), self.u(s, 1).y);
-            // The local direction, f·cos θ there, and 1/pdf.
-            let (wl, inv_pdf) = match strategy {
-                Strategy::UniformThetaPhi => {
-                    // θ = (π/2)u₀, φ = 2πu₁: the pdf per sr is 1/(π² sin θ).
-                    let u = V2::new(u.x.clamp(L::ZERO, L::ONE), u.y.clamp(L::ZERO, L::ONE));
-                    let (sin_t, cos_t) = (u.x * L::c(0.25)).sincos_2pi_unit();
-                    let (sin_p, cos_p) = u.y.sincos_2pi_unit();
-                    let w = V3::new(sin_t * cos_p, sin_t * sin_p, cos_t);
-                    (
-                        w,
-                        L::c(core::f64::consts::PI * core::f64::consts::PI) * sin_t,
-                    )
-                }
-                Strategy::UniformHemisphere => {
-                    let w: V3<L> = uniform_hemisphere(u);
-                    (w, L::ONE / uniform_hemisphere_pdf(w))
-                }
-                Strategy::CosineHemisphere => {
-                    let w: V3<L> = cosine_hemisphere(u);
-                    (w, L::ONE / cosine_hemisphere_pdf(w.z))
+            // The world direction, f·cos θ there, and 1/pdf.
+            let (wi, fcos, inv_pdf) = match strategy {
+                // The BSDF's sample carries f at its direction (for Phong, most of the cost).
+                Strategy::Bsdf => {
+                    let (wi, fcos, pdf) = self.bsdf_sample_with(u);
+                    (wi, fcos, L::ONE / pdf)
                 }
                 _ => {
-                    let b = self
-                        .bsdf
-                        .sample(V::from_lanes(self.wo), V::Vec2::from_lanes(u));
-                    (b.wi.to_lanes(), L::ONE / b.pdf)
+                    let (wl, inv_pdf) = hemisphere(strategy, u);
+                    (self.frame.to_world(wl), self.fcos_local(wl), inv_pdf)
                 }
             };
-            let wi = self.frame.to_world(wl);
             let ok = inv_pdf.is_finite() & inv_pdf.gt(L::ZERO);
-            let inv_pdf = L::select(ok, inv_pdf, L::ZERO);
-            let fcos = self.fcos(wi).scale(inv_pdf);
+            let fcos = V3::select(ok, fcos.scale(inv_pdf), V3::all(L::ZERO));
             sum = sum + self.along(wi, fcos, ru, |_| L::ONE);
         }
         sum.scale(L::ONE / L::c(f64::from(n.max(1))))
@@ -676,16 +682,16 @@ where
             let (index, pmf) = self.choose(v.x);
             let zero = V3::all(L::ZERO);
             let (mut x, mut nl, mut le, mut pdf) = (zero, zero, zero, L::ZERO);
-            for (j, light) in self.lights.lights.iter().enumerate() {
-                let m = index.eq(L::c(j as f64));
-                if m.any() {
-                    let a = light.splat::<V>().sample_area(p, V::Vec2::from_lanes(u));
+            let (lights, u) = (self.lights.lights, V::Vec2::from_lanes(u));
+            self.for_chosen(index, |_, j, m| {
+                if let Some(light) = lights.get(j) {
+                    let a = light.splat::<V>().sample_area(p, u);
                     x = V3::select(m, a.p.to_lanes(), x);
                     nl = V3::select(m, a.n.to_lanes(), nl);
                     le = V3::select(m, a.le.to_lanes(), le);
                     pdf = L::select(m, a.pdf, pdf);
                 }
-            }
+            });
             let d = x - self.p;
             let r2 = d.length_squared();
             let wi = d.normalize_scaled();
@@ -770,16 +776,14 @@ where
         let (index, pmf) = self.choose(choice);
         let zero = V3::all(L::ZERO);
         let (mut wi, mut le, mut pdf, mut dist) = (zero, zero, L::ZERO, L::ZERO);
-        for j in 0..self.lights.lights.len() {
-            let m = index.eq(L::c(j as f64));
-            if m.any() {
-                let ls = self.prepared(j).sample(V::Vec2::from_lanes(u));
-                wi = V3::select(m, ls.wi.to_lanes(), wi);
-                le = V3::select(m, ls.le.to_lanes(), le);
-                pdf = L::select(m, ls.pdf, pdf);
-                dist = L::select(m, ls.dist, dist);
-            }
-        }
+        let u = V::Vec2::from_lanes(u);
+        self.for_chosen(index, |e, j, m| {
+            let ls = e.prepared(j).sample(u);
+            wi = V3::select(m, ls.wi.to_lanes(), wi);
+            le = V3::select(m, ls.le.to_lanes(), le);
+            pdf = L::select(m, ls.pdf, pdf);
+            dist = L::select(m, ls.dist, dist);
+        });
         let pdf = pdf * pmf;
         let ok = pdf.gt(L::ZERO) & pdf.is_finite();
         Sampled {
@@ -903,6 +907,29 @@ where
         let w = L::from_fn(|i| res[i & 7].chosen().map_or(0.0, |(_, w)| w as f32));
         let ru = self.u(0, 1).y;
         self.shadow(c.scale(w), to, ru)
+    }
+}
+
+/// A local direction of the uniform θφ, uniform or cosine hemisphere strategy, and 1/pdf.
+#[inline(always)]
+fn hemisphere<L: Math>(strategy: Strategy, u: V2<L>) -> (V3<L>, L) {
+    match strategy {
+        Strategy::UniformThetaPhi => {
+            // θ = (π/2)u₀, φ = 2πu₁: the pdf per sr is 1/(π² sin θ).
+            let u = V2::new(u.x.clamp(L::ZERO, L::ONE), u.y.clamp(L::ZERO, L::ONE));
+            let (sin_t, cos_t) = (u.x * L::c(0.25)).sincos_2pi_unit();
+            let (sin_p, cos_p) = u.y.sincos_2pi_unit();
+            let pi2 = L::c(core::f64::consts::PI * core::f64::consts::PI);
+            (V3::new(sin_t * cos_p, sin_t * sin_p, cos_t), pi2 * sin_t)
+        }
+        Strategy::UniformHemisphere => {
+            let w: V3<L> = uniform_hemisphere(u);
+            (w, L::ONE / uniform_hemisphere_pdf(w))
+        }
+        _ => {
+            let w: V3<L> = cosine_hemisphere(u);
+            (w, L::ONE / cosine_hemisphere_pdf(w.z))
+        }
     }
 }
 

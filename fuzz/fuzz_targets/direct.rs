@@ -49,7 +49,8 @@ fuzz_target!(|data: &[u8]| {
         Material::Phong(Phong::new(Vec3::splat(kd), Vec3::splat(ks), f[26]))
     };
     let strategy = Strategy::ALL[byte(2) as usize % Strategy::ALL.len()];
-    let config = Config::new(u32::from(byte(3) % 5), u32::from(byte(4) % 5)).with_roulette(f[27]);
+    // Up to 11 of each, so that optimal MIS's cross-fitted path (8 and more) is reached.
+    let config = Config::new(u32::from(byte(3) % 12), u32::from(byte(4) % 12)).with_roulette(f[27]);
     let seed = u32::from(byte(5));
     let lights_sel = Lights::uniform(&lights);
 

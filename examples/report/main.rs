@@ -11,6 +11,7 @@
 mod direct;
 mod estimators;
 mod plain;
+mod plots;
 mod sequences;
 
 use std::fmt::Write as _;
@@ -31,6 +32,7 @@ const POINTS: usize = 4096;
 struct Config {
     quick: bool,
     json: Option<String>,
+    plots: Option<String>,
 }
 
 struct Row {
@@ -332,14 +334,16 @@ fn main() {
     let mut cfg = Config {
         quick: false,
         json: None,
+        plots: None,
     };
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         match a.as_str() {
             "--quick" => cfg.quick = true,
             "--json" => cfg.json = args.next(),
+            "--plots" => cfg.plots = args.next(),
             other => {
-                eprintln!("unknown argument {other}; use --quick and/or --json PATH");
+                eprintln!("unknown argument {other}; use --quick, --json PATH, --plots DIR");
                 std::process::exit(2);
             }
         }
@@ -672,6 +676,12 @@ fn main() {
         s.push_str("}\n");
         std::fs::write(path, s).expect("cannot write the JSON report");
         println!("wrote {path}");
+    }
+
+    if let Some(dir) = &cfg.plots {
+        let curves = sequences::rmse_curves(cfg.quick);
+        plots::write(dir, &cfg, &rows, &curves).expect("cannot write the plots");
+        println!("wrote the SVG plots into {dir}");
     }
 }
 

@@ -352,3 +352,31 @@ pub fn sequences(quick: bool) -> Vec<SeqRow> {
     ));
     rows
 }
+
+/// Per generator (and the PCG32 stream), the RMSE of the N-point estimate of the Gaussian's
+/// integral for N = 16…4096, over the same seeds as the slopes: the curves of the RMSE plot.
+pub fn rmse_curves(quick: bool) -> Vec<(&'static str, Vec<(f64, f64)>)> {
+    let seeds = if quick { 16 } else { 64 };
+    type Family = (&'static str, fn(u32, u32, u32) -> Vec2);
+    let mut families: Vec<Family> = generators().iter().map(|g| (g.name, g.points)).collect();
+    families.push(("pcg32", pcg_points));
+    families
+        .into_iter()
+        .map(|(name, points)| {
+            let curve = (4..=12)
+                .map(|k| {
+                    let n = 1u32 << k;
+                    let e = quality::rmse(
+                        points,
+                        quality::gaussian,
+                        quality::GAUSSIAN_INTEGRAL,
+                        n,
+                        seeds,
+                    );
+                    (f64::from(n), e)
+                })
+                .collect();
+            (name, curve)
+        })
+        .collect()
+}

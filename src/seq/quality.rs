@@ -142,6 +142,28 @@ pub fn disk_indicator(p: Vec2) -> f64 {
 /// ∫∫ 1[x² + y² < 2/π] over [0, 1]² = ½.
 pub const DISK_INTEGRAL: f64 = 0.5;
 
+/// The RMSE over seeds 0..`seeds` of the N-point estimate of ∫ f against `exact`, where
+/// `points(i, n, seed)` is point i of the family's set of size n: one point of the curve whose
+/// slope [`rmse_slope`] fits. Allocation-free; the cost is seeds · N evaluations.
+pub fn rmse(
+    points: impl Fn(u32, u32, u32) -> Vec2,
+    f: impl Fn(Vec2) -> f64,
+    exact: f64,
+    n: u32,
+    seeds: u32,
+) -> f64 {
+    let mut mse = 0.0;
+    for seed in 0..seeds {
+        let mut sum = 0.0;
+        for i in 0..n {
+            sum += f(points(i, n, seed));
+        }
+        let error = sum / n as f64 - exact;
+        mse += error * error;
+    }
+    libm::sqrt(mse / seeds as f64)
+}
+
 /// The convergence rate of a 2D point-set family on an integrand: the least-squares slope of
 /// log RMSE against log N, for N = 2ᵏ with k in `log2_n`.
 ///
@@ -160,16 +182,8 @@ pub fn rmse_slope(
     let (mut m, mut sx, mut sy, mut sxx, mut sxy) = (0.0, 0.0, 0.0, 0.0, 0.0);
     for k in log2_n {
         let n = 1u32 << k;
-        let mut mse = 0.0;
-        for seed in 0..seeds {
-            let mut sum = 0.0;
-            for i in 0..n {
-                sum += f(points(i, n, seed));
-            }
-            let error = sum / n as f64 - exact;
-            mse += error * error;
-        }
-        let (x, y) = (libm::log(n as f64), 0.5 * libm::log(mse / seeds as f64));
+        let e = rmse(&points, &f, exact, n, seeds);
+        let (x, y) = (libm::log(n as f64), libm::log(e));
         m += 1.0;
         sx += x;
         sy += y;

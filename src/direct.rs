@@ -389,6 +389,18 @@ pub trait DirectLane: Math + Lane32 + sealed::Sealed {
     fn from_fn(f: impl FnMut(usize) -> f32) -> Self;
     /// The number of lanes set in `m`.
     fn count(m: Self::Mask) -> u32;
+
+    /// Optimal MIS's accumulator of one colour channel at this width: [`OptimalMis`] or
+    /// [`mis::OptimalMisX8`], the same sums lane by lane.
+    type Optimal: Copy;
+    /// An empty accumulator for counts n₁, n₂.
+    fn optimal(n1: f64, n2: f64) -> Self::Optimal;
+    /// One sample per lane.
+    fn optimal_push(acc: &mut Self::Optimal, f: Self, pdf1: Self, pdf2: Self);
+    /// Cross-fitted: the mean of a's estimate with α from b and b's with α from a.
+    fn optimal_cross(a: &Self::Optimal, b: &Self::Optimal) -> Self;
+    /// The balance heuristic's estimate.
+    fn optimal_balance(a: &Self::Optimal) -> Self;
 }
 
 impl DirectLane for f32 {
@@ -405,6 +417,21 @@ impl DirectLane for f32 {
     fn count(m: bool) -> u32 {
         u32::from(m)
     }
+
+    type Optimal = OptimalMis;
+    fn optimal(n1: f64, n2: f64) -> OptimalMis {
+        OptimalMis::new(n1, n2)
+    }
+    #[inline(always)]
+    fn optimal_push(acc: &mut OptimalMis, f: f32, pdf1: f32, pdf2: f32) {
+        acc.push(f64::from(f), f64::from(pdf1), f64::from(pdf2));
+    }
+    fn optimal_cross(a: &OptimalMis, b: &OptimalMis) -> f32 {
+        (0.5 * (a.estimate_with_alpha_of(b) + b.estimate_with_alpha_of(a))) as f32
+    }
+    fn optimal_balance(a: &OptimalMis) -> f32 {
+        a.balance_estimate() as f32
+    }
 }
 
 impl DirectLane for F32x8 {
@@ -420,6 +447,22 @@ impl DirectLane for F32x8 {
     #[inline(always)]
     fn count(m: F32x8) -> u32 {
         m.to_bitmask().count_ones()
+    }
+
+    type Optimal = mis::OptimalMisX8;
+    fn optimal(n1: f64, n2: f64) -> mis::OptimalMisX8 {
+        mis::OptimalMisX8::new(n1, n2)
+    }
+    #[inline(always)]
+    fn optimal_push(acc: &mut mis::OptimalMisX8, f: F32x8, pdf1: F32x8, pdf2: F32x8) {
+        acc.push(f, pdf1, pdf2);
+    }
+    fn optimal_cross(a: &mis::OptimalMisX8, b: &mis::OptimalMisX8) -> F32x8 {
+        let (ab, ba) = (a.estimate_with_alpha_of(b), b.estimate_with_alpha_of(a));
+        F32x8::new(core::array::from_fn(|i| (0.5 * (ab[i] + ba[i])) as f32))
+    }
+    fn optimal_balance(a: &mis::OptimalMisX8) -> F32x8 {
+        F32x8::new(a.balance_estimate().map(|x| x as f32))
     }
 }
 
@@ -832,17 +875,14 @@ where
                 (f64::from(nl), f64::from(nb))
             }
         };
-        let mut acc = [[[OptimalMis::default(); 3]; 8]; 2];
-        for (k, fold) in acc.iter_mut().enumerate() {
-            let (a, b) = fold_counts(k as u32);
-            *fold = [[OptimalMis::new(a, b); 3]; 8];
-        }
-        let push = |acc: &mut [[OptimalMis; 3]; 8], f: V3<L>, pl: L, pb: L| {
-            for (i, a) in acc.iter_mut().enumerate().take(L::WIDTH) {
-                let (pl, pb) = (f64::from(pl.lane(i)), f64::from(pb.lane(i)));
-                for (a, f) in a.iter_mut().zip([f.x, f.y, f.z]) {
-                    a.push(f64::from(f.lane(i)), pl, pb);
-                }
+        // Per half, one accumulator per colour channel.
+        let mut acc = [0, 1].map(|k| {
+            let (a, b) = fold_counts(k);
+            [L::optimal(a, b); 3]
+        });
+        let push = |acc: &mut [L::Optimal; 3], f: V3<L>, pl: L, pb: L| {
+            for (a, f) in acc.iter_mut().zip([f.x, f.y, f.z]) {
+                L::optimal_push(a, f, pl, pb);
             }
         };
         let fold = |j: u32| if cross { (j % 2) as usize } else { 0 };
@@ -872,19 +912,14 @@ where
             let f = V3::select(w.gt(L::ZERO), scale_div(kept, w / pb), V3::all(L::ZERO));
             push(&mut acc[fold(j)], f, pl, pb);
         }
-        let est = |c: usize, i: usize| {
-            let [a, b] = [&acc[0][i & 7][c], &acc[1][i & 7][c]];
+        let est = |c: usize| {
             if cross {
-                0.5 * (a.estimate_with_alpha_of(b) + b.estimate_with_alpha_of(a))
+                L::optimal_cross(&acc[0][c], &acc[1][c])
             } else {
-                a.balance_estimate()
+                L::optimal_balance(&acc[0][c])
             }
         };
-        V3::new(
-            L::from_fn(|i| est(0, i) as f32),
-            L::from_fn(|i| est(1, i) as f32),
-            L::from_fn(|i| est(2, i) as f32),
-        )
+        V3::new(est(0), est(1), est(2))
     }
 
     /// RIS: N light-sampled candidates with target p̂ = luminance(f·Le·cos θ), one kept, one

@@ -48,7 +48,7 @@
 //! unbiased form. [`Reservoir`] is resampled importance sampling's weighted reservoir (Talbot et
 //! al. 2005), driven by one u. Their packet forms keep one accumulator or reservoir per lane.
 
-use crate::lane::{F32x8, Lane, Lane32, U32Lane, U32x8};
+use crate::lane::{F32x8, F64x4, Lane, Lane32, U32Lane, U32x8};
 use crate::warp::ONE_MINUS_EPS;
 
 /// The packet forms, on [`F32x8`]: the same generic functions.
@@ -291,13 +291,55 @@ fn pick<L: Lane>(m: L::Mask, a: (L, L, L), b: (L, L, L)) -> (L, L, L) {
 pub struct OptimalMis {
     counts: [f64; 2],
     samples: u64,
+    sums: Sums<f64>,
+}
+
+/// The sums of optimal MIS, lane by lane: `f64` for [`OptimalMis`], two [`F64x4`] for the eight
+/// lanes of [`OptimalMisX8`], pushed by one generic function so that the lanes equal the scalar
+/// accumulator bit for bit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Sums<W> {
     /// Â₁₁, Â₁₂, Â₂₂.
-    a: [f64; 3],
-    b: [f64; 2],
+    a: [W; 3],
+    b: [W; 2],
     /// Σ f/S: the balance heuristic's sum.
-    balance: f64,
+    balance: W,
     /// Σ p₁/S, Σ p₂/S: with `balance`, the residual sum for any α (it is linear in α).
-    q: [f64; 2],
+    q: [W; 2],
+}
+
+impl<W: Lane> Default for Sums<W> {
+    fn default() -> Self {
+        Self {
+            a: [W::ZERO; 3],
+            b: [W::ZERO; 2],
+            balance: W::ZERO,
+            q: [W::ZERO; 2],
+        }
+    }
+}
+
+impl<W: Lane> Sums<W> {
+    /// One sample per lane: f and both pdfs. Unusable samples (see [`mixture`]) and terms beyond
+    /// the lane's range add 0.
+    #[inline(always)]
+    fn push(&mut self, counts: [f64; 2], f: W, pdf1: W, pdf2: W) {
+        let (usable, s) = mixture(counts, f, pdf1, pdf2);
+        let (q1, q2, g) = (pdf1 / s, pdf2 / s, f / s);
+        let terms = [q1 * q1, q1 * q2, q2 * q2, g * q1, g * q2, g, q1, q2];
+        // pdf/S beyond 1e154 (tiny counts against large pdfs) would overflow a square.
+        let keep = terms.iter().fold(usable, |m, t| m & t.is_finite());
+        let add = |acc: &mut W, t: W| *acc = *acc + W::select(keep, t, W::ZERO);
+        let [a11, a12, a22, b1, b2, g, q1, q2] = terms;
+        add(&mut self.a[0], a11);
+        add(&mut self.a[1], a12);
+        add(&mut self.a[2], a22);
+        add(&mut self.b[0], b1);
+        add(&mut self.b[1], b2);
+        add(&mut self.balance, g);
+        add(&mut self.q[0], q1);
+        add(&mut self.q[1], q2);
+    }
 }
 
 impl OptimalMis {
@@ -315,22 +357,7 @@ impl OptimalMis {
     #[inline]
     pub fn push(&mut self, f: f64, pdf1: f64, pdf2: f64) {
         self.samples += 1;
-        let Some(s) = mixture(self.counts, f, pdf1, pdf2) else {
-            return;
-        };
-        let (q1, q2, g) = (pdf1 / s, pdf2 / s, f / s);
-        let terms = [q1 * q1, q1 * q2, q2 * q2, g * q1, g * q2, g];
-        // pdf/S beyond 1e154 (tiny counts against large pdfs) would overflow a square.
-        if terms.iter().all(|t| t.is_finite()) {
-            for (acc, t) in self.a.iter_mut().zip(&terms[..3]) {
-                *acc += t;
-            }
-            self.b[0] += terms[3];
-            self.b[1] += terms[4];
-            self.balance += g;
-            self.q[0] += q1;
-            self.q[1] += q2;
-        }
+        self.sums.push(self.counts, f, pdf1, pdf2);
     }
 
     /// The samples pushed so far.
@@ -342,16 +369,17 @@ impl OptimalMis {
     pub fn alpha(&self) -> Option<[f64; 2]> {
         // Cramer's rule on A/ka and b/kb, whose entries are at most 1, so that no product
         // overflows; α = (kb/ka)·(A/ka)⁻¹(b/kb).
-        let ka = self.a[0].max(self.a[2]);
-        let kb = self.b[0].abs().max(self.b[1].abs());
+        let Sums { a, b, .. } = self.sums;
+        let ka = a[0].max(a[2]);
+        let kb = b[0].abs().max(b[1].abs());
         if !(ka > 0.0 && ka.is_finite() && kb.is_finite()) {
             return None;
         }
         if kb == 0.0 {
             return Some([0.0, 0.0]);
         }
-        let [a11, a12, a22] = self.a.map(|x| x / ka);
-        let [b1, b2] = self.b.map(|x| x / kb);
+        let [a11, a12, a22] = a.map(|x| x / ka);
+        let [b1, b2] = b.map(|x| x / kb);
         let det = a11 * a22 - a12 * a12;
         // Cauchy–Schwarz makes det ≥ 0; near 0 the system carries no information.
         let regular = det > 1e-9 * a11 * a22;
@@ -366,7 +394,7 @@ impl OptimalMis {
     /// The balance-heuristic estimate from the same samples: Σf/S over the rounds of n₁ + n₂
     /// samples seen. 0 before any sample.
     pub fn balance_estimate(&self) -> f64 {
-        per_round(self.balance, self.samples, self.counts)
+        per_round(self.sums.balance, self.samples, self.counts)
     }
 
     /// The direct optimal-MIS estimate α₁ + α₂ (consistent, bias of order 1/N), or the balance
@@ -387,7 +415,7 @@ impl OptimalMis {
     /// estimate from one set of samples with no pilot pass.
     pub fn estimate_with_alpha_of(&self, pilot: &OptimalMis) -> f64 {
         let [a1, a2] = pilot.alpha().unwrap_or([0.0, 0.0]);
-        let residual = self.balance - a1 * self.q[0] - a2 * self.q[1];
+        let residual = self.sums.balance - a1 * self.sums.q[0] - a2 * self.sums.q[1];
         a1 + a2 + per_round(residual, self.samples, self.counts)
     }
 }
@@ -416,7 +444,8 @@ impl FixedAlpha {
     #[inline]
     pub fn push(&mut self, f: f64, pdf1: f64, pdf2: f64) {
         self.samples += 1;
-        if let Some(s) = mixture(self.counts, f, pdf1, pdf2) {
+        let (usable, s) = mixture(self.counts, f, pdf1, pdf2);
+        if usable {
             let r = (f - self.alpha[0] * pdf1 - self.alpha[1] * pdf2) / s;
             if r.is_finite() {
                 self.residual += r;
@@ -435,12 +464,14 @@ fn counts(n1: f64, n2: f64) -> [f64; 2] {
     [n1, n2].map(|n| if n > 0.0 { n } else { 0.0 })
 }
 
-/// S = n₁p₁ + n₂p₂ for a usable sample: finite f, finite non-negative pdfs, 0 < S < ∞.
+/// S = n₁p₁ + n₂p₂, and where the sample is usable: finite f, finite non-negative pdfs,
+/// 0 < S < ∞.
 #[inline(always)]
-fn mixture(counts: [f64; 2], f: f64, pdf1: f64, pdf2: f64) -> Option<f64> {
-    let ok = |x: f64| x.is_finite() && x >= 0.0;
-    let s = counts[0] * pdf1 + counts[1] * pdf2;
-    (ok(pdf1) && ok(pdf2) && f.is_finite() && s > 0.0 && s.is_finite()).then_some(s)
+fn mixture<W: Lane>(counts: [f64; 2], f: W, pdf1: W, pdf2: W) -> (W::Mask, W) {
+    let ok = |x: W| x.is_finite() & x.ge(W::ZERO);
+    let s = W::c(counts[0]) * pdf1 + W::c(counts[1]) * pdf2;
+    let usable = ok(pdf1) & ok(pdf2) & f.is_finite() & s.gt(W::ZERO) & s.is_finite();
+    (usable, s)
 }
 
 /// A sum over every sample, per round of n₁ + n₂ samples; 0 before any sample.
@@ -449,38 +480,82 @@ fn per_round(sum: f64, samples: u64, counts: [f64; 2]) -> f64 {
     if rounds > 0.0 { sum / rounds } else { 0.0 }
 }
 
-/// Eight independent [`OptimalMis`] accumulators, one per packet lane.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+/// Eight [`OptimalMis`] accumulators, one per packet lane, summed in two [`F64x4`] halves by
+/// the same generic code as the scalar accumulator: lane i equals an `OptimalMis` given lane
+/// i's samples, bit for bit, and the sums vectorise.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct OptimalMisX8 {
-    lanes: [OptimalMis; 8],
+    counts: [f64; 2],
+    samples: u64,
+    halves: [Sums<F64x4>; 2],
+}
+
+impl Default for OptimalMisX8 {
+    fn default() -> Self {
+        Self::new(0.0, 0.0)
+    }
 }
 
 impl OptimalMisX8 {
     /// Eight empty accumulators with the same counts.
     pub fn new(n1: f64, n2: f64) -> Self {
         Self {
-            lanes: [OptimalMis::new(n1, n2); 8],
+            counts: counts(n1, n2),
+            samples: 0,
+            halves: [Sums::default(); 2],
         }
     }
 
     /// Lane i of each argument goes to accumulator i.
     #[inline]
     pub fn push(&mut self, f: F32x8, pdf1: F32x8, pdf2: F32x8) {
-        let (f, p1, p2) = (f.to_array(), pdf1.to_array(), pdf2.to_array());
-        for (i, acc) in self.lanes.iter_mut().enumerate() {
-            acc.push(f64::from(f[i]), f64::from(p1[i]), f64::from(p2[i]));
+        self.samples += 1;
+        let (f, p1, p2) = (widen(f), widen(pdf1), widen(pdf2));
+        for (k, half) in self.halves.iter_mut().enumerate() {
+            half.push(self.counts, f[k], p1[k], p2[k]);
         }
     }
 
-    /// Accumulator i.
-    pub fn lane(&self, i: usize) -> &OptimalMis {
-        &self.lanes[i]
+    /// Accumulator i (0 ≤ i < 8; larger i wrap).
+    pub fn lane(&self, i: usize) -> OptimalMis {
+        let (h, j) = (&self.halves[(i >> 2) & 1], i & 3);
+        let at = |w: F64x4| w.to_array()[j];
+        OptimalMis {
+            counts: self.counts,
+            samples: self.samples,
+            sums: Sums {
+                a: h.a.map(at),
+                b: h.b.map(at),
+                balance: at(h.balance),
+                q: h.q.map(at),
+            },
+        }
     }
 
     /// Each lane's direct estimate.
     pub fn estimate(&self) -> [f64; 8] {
-        self.lanes.map(|l| l.estimate())
+        core::array::from_fn(|i| self.lane(i).estimate())
     }
+
+    /// Each lane's balance estimate.
+    pub fn balance_estimate(&self) -> [f64; 8] {
+        core::array::from_fn(|i| self.lane(i).balance_estimate())
+    }
+
+    /// Each lane's [`OptimalMis::estimate_with_alpha_of`] with the same lane of `pilot`.
+    pub fn estimate_with_alpha_of(&self, pilot: &OptimalMisX8) -> [f64; 8] {
+        core::array::from_fn(|i| self.lane(i).estimate_with_alpha_of(&pilot.lane(i)))
+    }
+}
+
+/// Eight f32 lanes as two halves of four f64 lanes (exact).
+#[inline(always)]
+fn widen(x: F32x8) -> [F64x4; 2] {
+    let x = x.to_array().map(f64::from);
+    [
+        F64x4::new([x[0], x[1], x[2], x[3]]),
+        F64x4::new([x[4], x[5], x[6], x[7]]),
+    ]
 }
 
 // ---------------------------------------------------------------------------------------------

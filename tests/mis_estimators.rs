@@ -168,8 +168,20 @@ fn optimal_mis_fallback_and_packets() {
     let mut rng = TestRng::new(40);
     let mut packet = mis::x8::OptimalMis::new(2.0, 1.0);
     let mut lanes = [OptimalMis::new(2.0, 1.0); 8];
-    for _ in 0..1000 {
-        let draw = |rng: &mut TestRng| -> [f32; 8] { core::array::from_fn(|_| rng.u01()) };
+    // Mostly ordinary values, and in one draw of four each lane's value is special (NaN, ±∞,
+    // 0, negative, huge, subnormal), so the lanes skip samples independently.
+    const SPECIAL: [f32; 8] = [f32::NAN, f32::INFINITY, -1.0, 0.0, 3e38, 1e-40, -0.0, 1e-30];
+    for k in 0..1000 {
+        let draw = |rng: &mut TestRng| -> [f32; 8] {
+            core::array::from_fn(|_| {
+                let x = rng.u01();
+                if k % 4 == 0 && x < 0.3 {
+                    SPECIAL[(x * 26.0) as usize % 8]
+                } else {
+                    x
+                }
+            })
+        };
         let (f, a, b) = (draw(&mut rng), draw(&mut rng), draw(&mut rng));
         packet.push(F32x8::new(f), F32x8::new(a), F32x8::new(b));
         for (i, lane) in lanes.iter_mut().enumerate() {
@@ -177,7 +189,7 @@ fn optimal_mis_fallback_and_packets() {
         }
     }
     for (i, lane) in lanes.iter().enumerate() {
-        assert_eq!(packet.lane(i), lane);
+        assert_eq!(packet.lane(i), *lane);
         assert_eq!(packet.estimate()[i].to_bits(), lane.estimate().to_bits());
     }
 }

@@ -9,6 +9,11 @@ use wide::u32x8;
 /// or clear. Re-exported as [`crate::x8::F32x8`].
 pub type F32x8 = wide::f32x8;
 
+/// Four f64 lanes (`wide::f64x4`): the accumulators of packet estimators (optimal MIS), which sum
+/// in f64 as their scalar twins do, lane by lane with the same operations. Masks are `F64x4`
+/// values with all bits set or clear.
+pub type F64x4 = wide::f64x4;
+
 /// A lane-wise boolean: `bool` for scalar lanes, an all-ones/all-zeros bit pattern for packets.
 pub trait Mask: Copy + BitAnd<Output = Self> + BitOr<Output = Self> + Not<Output = Self> {
     /// True if any lane is set.
@@ -28,6 +33,13 @@ impl Mask for F32x8 {
     inline_fns! {
         fn any(self) -> bool { F32x8::any(self) }
         fn all(self) -> bool { F32x8::all(self) }
+    }
+}
+
+impl Mask for F64x4 {
+    inline_fns! {
+        fn any(self) -> bool { F64x4::any(self) }
+        fn all(self) -> bool { F64x4::all(self) }
     }
 }
 
@@ -298,4 +310,32 @@ impl Lane for f64 {
         fn copysign(self, sign: Self) -> Self { libm::copysign(self, sign) }
     }
     scalar_lane!();
+}
+
+// ---------------------------------------------------------------------------------------------
+// F64x4: packet accumulators
+
+/// Lane-wise the f64 instance's operations, except `mul_add`, which is unfused here: packet
+/// accumulators do not use it.
+impl Lane for F64x4 {
+    type Mask = F64x4;
+    const ZERO: Self = F64x4::new([0.0; 4]);
+    const ONE: Self = F64x4::new([1.0; 4]);
+    const TWO: Self = F64x4::new([2.0; 4]);
+    const HALF: Self = F64x4::new([0.5; 4]);
+    const EPSILON: Self = F64x4::new([f64::EPSILON; 4]);
+
+    inline_fns! {
+        fn c(x: f64) -> Self { F64x4::splat(x) }
+        fn mul_add(self, b: Self, c: Self) -> Self { self * b + c }
+        fn sqrt(self) -> Self { F64x4::sqrt(self) }
+        fn abs(self) -> Self { F64x4::abs(self) }
+        fn copysign(self, sign: Self) -> Self { F64x4::abs(self) | (sign & F64x4::splat(-0.0)) }
+        fn lt(self, o: Self) -> F64x4 { self.simd_lt(o) }
+        fn le(self, o: Self) -> F64x4 { self.simd_le(o) }
+        fn gt(self, o: Self) -> F64x4 { self.simd_gt(o) }
+        fn ge(self, o: Self) -> F64x4 { self.simd_ge(o) }
+        fn eq(self, o: Self) -> F64x4 { self.simd_eq(o) }
+        fn select(m: F64x4, a: Self, b: Self) -> Self { m.select(a, b) }
+    }
 }

@@ -13,6 +13,7 @@ use std::time::Instant;
 
 use mcsample::direct::{Config as DirectConfig, Generator, Strategy};
 use mcsample::verify::direct::{grid_scenes, run};
+use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use crate::{Config, Row};
@@ -33,19 +34,17 @@ fn log_range(values: impl Iterator<Item = f64>) -> std::ops::Range<f64> {
     }
 }
 
-/// A log-log chart of lines with markers and a legend.
-fn lines(
-    path: &Path,
+type LogLog = Cartesian2d<LogCoord<f64>, LogCoord<f64>>;
+
+/// A white log-log chart with its caption, axes and grid drawn.
+fn log_chart<'a, 'b>(
+    root: &'a DrawingArea<SVGBackend<'b>, Shift>,
     title: &str,
-    x_desc: &str,
-    y_desc: &str,
-    series: &[Series],
-) -> Result<(), Box<dyn std::error::Error>> {
-    let root = SVGBackend::new(path, (800, 560)).into_drawing_area();
+    (xs, x_desc): (std::ops::Range<f64>, &str),
+    (ys, y_desc): (std::ops::Range<f64>, &str),
+) -> Result<ChartContext<'a, SVGBackend<'b>, LogLog>, Box<dyn std::error::Error>> {
     root.fill(&WHITE)?;
-    let xs = log_range(series.iter().flat_map(|s| s.1.iter().map(|p| p.0)));
-    let ys = log_range(series.iter().flat_map(|s| s.1.iter().map(|p| p.1)));
-    let mut chart = ChartBuilder::on(&root)
+    let mut chart = ChartBuilder::on(root)
         .caption(title, ("sans-serif", 20))
         .margin(12)
         .x_label_area_size(44)
@@ -56,6 +55,21 @@ fn lines(
         .x_desc(x_desc)
         .y_desc(y_desc)
         .draw()?;
+    Ok(chart)
+}
+
+/// A log-log chart of lines with markers and a legend.
+fn lines(
+    path: &Path,
+    title: &str,
+    x_desc: &str,
+    y_desc: &str,
+    series: &[Series],
+) -> Result<(), Box<dyn std::error::Error>> {
+    let root = SVGBackend::new(path, (800, 560)).into_drawing_area();
+    let xs = log_range(series.iter().flat_map(|s| s.1.iter().map(|p| p.0)));
+    let ys = log_range(series.iter().flat_map(|s| s.1.iter().map(|p| p.1)));
+    let mut chart = log_chart(&root, title, (xs, x_desc), (ys, y_desc))?;
     for (i, (name, points)) in series.iter().enumerate() {
         let color = Palette99::pick(i).to_rgba();
         let points: Vec<_> = points
@@ -153,23 +167,14 @@ pub fn write(
     let floor = 1e-9;
     let path = dir.join("warps_speed_error.svg");
     let root = SVGBackend::new(&path, (900, 640)).into_drawing_area();
-    root.fill(&WHITE)?;
     let xs = log_range(rows.iter().map(|r| r.x8_ns));
     let ys = log_range(rows.iter().map(|r| r.max_abs_err.max(floor)));
-    let mut chart = ChartBuilder::on(&root)
-        .caption(
-            "Warps and lights: x8 time against worst error vs f64",
-            ("sans-serif", 20),
-        )
-        .margin(12)
-        .x_label_area_size(44)
-        .y_label_area_size(70)
-        .build_cartesian_2d(xs.log_scale(), ys.log_scale())?;
-    chart
-        .configure_mesh()
-        .x_desc("x8 ns per sample")
-        .y_desc("max abs error (1e-9 = exact)")
-        .draw()?;
+    let mut chart = log_chart(
+        &root,
+        "Warps and lights: x8 time against worst error vs f64",
+        (xs, "x8 ns per sample"),
+        (ys, "max abs error (1e-9 = exact)"),
+    )?;
     chart.draw_series(rows.iter().map(|r| {
         let p = (r.x8_ns, r.max_abs_err.max(floor));
         EmptyElement::at(p)

@@ -47,7 +47,11 @@ const SIN_COS_DOMAIN: f32 = 6433.0;
 /// Beyond it, up to 2^22: absolute error ≤ SIN_COS_BEYOND · |x| · 2^-24.
 const SIN_COS_BEYOND: f64 = 1.0;
 
-const FMA: bool = cfg!(target_feature = "fma");
+/// Whether `mul_add` is fused in this build: x86 with the `fma` feature, and every aarch64 build
+/// (NEON's `fmla` is part of the base architecture, and `wide` uses it). With every other
+/// operation IEEE-exact, an aarch64 build computes what the x86 FMA build does, bit for bit, so
+/// it shares that column.
+const FMA: bool = cfg!(any(target_feature = "fma", target_arch = "aarch64"));
 
 fn bound(name: &str) -> f64 {
     let row = TABLE

@@ -142,7 +142,7 @@ fn bits(v: &[f32]) -> Vec<u32> {
 
 #[test]
 fn golden_vectors() {
-    let idx = [0u32, 1, 2, 1000, u32::MAX];
+    let idx = GOLDEN_INDICES;
     let stratified: Vec<f32> = idx.iter().map(|&i| seq::stratified(i, 16, 3, 7)).collect();
     let latin: Vec<f32> = idx
         .iter()
@@ -169,29 +169,13 @@ fn golden_vectors() {
         bits(&cmj),
         bits(&sobol),
     ];
-    let want: [&[u32]; 6] = GOLDEN;
+    let want: [&[u32]; 6] = GOLDEN_SEQ;
     for (k, (g, w)) in got.iter().zip(want).enumerate() {
         assert_eq!(g.as_slice(), w, "generator {k}: {g:#x?}");
     }
 }
 
-const GOLDEN: [&[u32]; 6] = [
-    &[0x3f714243, 0x3f6b4da1, 0x3f5ca539, 0x3eeb0db6, 0x3f476c13],
-    &[0x3f073165, 0x3f5e23a0, 0x3ef3dcc5, 0x3f6b7cd6, 0x3ea872c0],
-    &[
-        0x3bc21180, 0x3f4d4599, 0x3eb53812, 0x3f528077, 0x3d1b0190, 0x3d4800f0, 0x3f17e96b,
-        0x3d49b7d0, 0x3ed61372, 0x3f53ad0b,
-    ],
-    &[
-        0x3d69e077, 0x3f20a76e, 0x3f5431fd, 0x3f5fa552, 0x3f0ae12c, 0x3eb3d602, 0x3e1de45a,
-        0x3f7a379b, 0x3f0fb9ec, 0x3f3159b9,
-    ],
-    &[
-        0x3e2db424, 0x3ed34e7a, 0x3bdddb80, 0x3f306abf, 0x3eb9198e, 0x3de898a8, 0x3eb280c2,
-        0x3db52848, 0x3ecb5f26, 0x3e56441c,
-    ],
-    &[0x3f531958, 0x3d314200, 0x3f2d1d31, 0x3f5ef715, 0x3f539000],
-];
+include!("golden.in");
 
 // ---------------------------------------------------------------------------------------------
 // Packets equal scalars, bit for bit.

@@ -719,12 +719,9 @@ fn degenerate_triangles() -> Vec<(&'static str, Vec3, Vec3, Vec3)> {
         ("zero triangle", Vec3::ZERO, Vec3::ZERO, Vec3::ZERO),
         ("infinite vertex", Vec3::new(f32::INFINITY, 0.0, 1.0), q, s),
         ("NaN vertex", Vec3::new(f32::NAN, 0.0, 1.0), q, s),
-        (
-            "huge vertices",
-            Vec3::splat(f32::MAX),
-            Vec3::new(f32::MAX, -f32::MAX, 1.0),
-            s,
-        ),
+        // Vertices at f32::MAX are no longer here: their edges overflow f32, but the set-up
+        // scales the vertices by a power of two first, and such a triangle is a light
+        // (`tests/polygon_regressions.rs` checks its solid angle).
     ]
 }
 

@@ -178,9 +178,32 @@ fn cross_in<T: Wide>(a: [T; 3], b: [T; 3]) -> [T; 3] {
 fn triangle_terms_in<T: Wide>(a: [T; 3], b: [T; 3], c: [T; 3]) -> ([T; 3], T, T, T) {
     let sub = |p: [T; 3], q: [T; 3]| [p[0] - q[0], p[1] - q[1], p[2] - q[2]];
     let dot = |p: [T; 3], q: [T; 3]| p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
-    let n = cross_in(sub(b, a), sub(c, a));
-    let h = dot(a, n);
-    let (la, lb, lc) = (dot(a, a).sqrt(), dot(b, b).sqrt(), dot(c, c).sqrt());
+    // n and h = v·n from the vertex v nearest the shading point, as the base of both edges:
+    // rounding n costs h |v|·err(n), and err(n) grows with the edges' lengths, so from a vertex
+    // far beyond the others h lost 1.2e-5 of itself even in f64 for a light seen nearly edge-on,
+    // and Ω depended on the vertices' order (found by the `spherical` fuzz target). A cyclic
+    // relabelling keeps n's orientation.
+    let (qa, qb, qc) = (dot(a, a), dot(b, b), dot(c, c));
+    let pick = |m: (T, T), p: [T; 3], q: [T; 3]| {
+        let s = |x: T, y: T| T::select_lt(m.0, m.1, x, y);
+        [s(p[0], q[0]), s(p[1], q[1]), s(p[2], q[2])]
+    };
+    // (a, b, c), or (b, c, a) where b is nearer than a, then (c, a, b) where c is nearer still.
+    let b_nearer = (qb, qa);
+    let (v0, v1, v2) = (
+        pick(b_nearer, b, a),
+        pick(b_nearer, c, b),
+        pick(b_nearer, a, c),
+    );
+    let c_nearest = (qc, T::select_lt(qb, qa, qb, qa));
+    let (v0, v1, v2) = (
+        pick(c_nearest, c, v0),
+        pick(c_nearest, a, v1),
+        pick(c_nearest, b, v2),
+    );
+    let n = cross_in(sub(v1, v0), sub(v2, v0));
+    let h = dot(v0, n);
+    let (la, lb, lc) = (qa.sqrt(), qb.sqrt(), qc.sqrt());
     let d = la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la;
     let s = la * lb * lc;
     (n, h, h / s, d / s)
@@ -203,12 +226,18 @@ trait Wide:
     + core::ops::Div<Output = Self>
 {
     fn sqrt(self) -> Self;
+    /// `x` where `a < b`, else `y` (so `y` where either is NaN).
+    fn select_lt(a: Self, b: Self, x: Self, y: Self) -> Self;
 }
 
 impl Wide for f64 {
     #[inline(always)]
     fn sqrt(self) -> f64 {
         crate::lane::sqrt_f64(self)
+    }
+    #[inline(always)]
+    fn select_lt(a: f64, b: f64, x: f64, y: f64) -> f64 {
+        core::hint::select_unpredictable(a < b, x, y)
     }
 }
 
@@ -310,6 +339,13 @@ impl Wide for F64x8 {
     #[inline(always)]
     fn sqrt(self) -> Self {
         F64x8(self.0.sqrt(), self.1.sqrt())
+    }
+    #[inline(always)]
+    fn select_lt(a: Self, b: Self, x: Self, y: Self) -> Self {
+        F64x8(
+            a.0.simd_lt(b.0).select(x.0, y.0),
+            a.1.simd_lt(b.1).select(x.1, y.1),
+        )
     }
 }
 impl core::ops::Mul for F64x8 {

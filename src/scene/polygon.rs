@@ -23,8 +23,8 @@ use crate::warp::{SphericalRectangle, SphericalTriangle, uniform_triangle};
 /// returns the exact converted pdf. `pdf` and `hit` accept directions within the spherical
 /// triangle's slack (4.8e-7 + 7.6e-6·√Ω rad in f32) of the silhouette.
 ///
-/// Coincident or collinear vertices, a shading point within 1e-6 rad of the plane, and
-/// non-finite input give pdf 0.
+/// Coincident or collinear vertices, a shading point closer to the plane than 1e-6 of its
+/// distance to the nearest vertex, and non-finite input give pdf 0.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TriangleLight<V: Point3 = Vec3> {
     /// The vertices.
@@ -127,11 +127,12 @@ impl<V: Point3<Lane = L>, L: Math> PreparedTriangle<V> {
 /// A rectangle (ex ⟂ ey) is sampled uniformly in solid angle ([`SphericalRectangle`], Ureña,
 /// Fajardo and King 2013), with the area fallback below
 /// [`SPHERICAL_RECTANGLE_MIN_SR`](crate::warp::SPHERICAL_RECTANGLE_MIN_SR). Ureña's map needs a
-/// rectangle: a parallelogram whose edges are further than 1e-4 from orthogonal is sampled by
+/// rectangle: a parallelogram whose edges are further than 2e-6 from orthogonal is sampled by
 /// area, with its exact converted pdf (or split it into two [`TriangleLight`]s, which are
 /// sampled in solid angle).
 ///
-/// A shading point within 1e-6 rad of the plane, zero edges and non-finite input give pdf 0.
+/// A shading point closer to the plane than 1e-6 of its distance to the nearest corner, zero
+/// edges and non-finite input give pdf 0.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RectangleLight<V: Point3 = Vec3> {
     /// The corner.

@@ -73,8 +73,9 @@ pub(crate) use phong::phong_lobe_density;
 pub use phong::{PHONG_N_MAX, phong_lobe, phong_lobe_inverse, phong_lobe_pdf};
 pub use sphere::{uniform_sphere, uniform_sphere_inverse, uniform_sphere_pdf};
 pub use spherical_rectangle::{
-    SPHERICAL_RECTANGLE_MAX_SR, SPHERICAL_RECTANGLE_MIN_SR, SphericalRectangle,
-    spherical_rectangle, spherical_rectangle_inverse, spherical_rectangle_pdf, urena_rectangle,
+    SPHERICAL_RECTANGLE_INVERSE_REACH, SPHERICAL_RECTANGLE_MAX_SR, SPHERICAL_RECTANGLE_MIN_SR,
+    SphericalRectangle, spherical_rectangle, spherical_rectangle_inverse, spherical_rectangle_pdf,
+    urena_rectangle,
 };
 pub use spherical_triangle::{
     SPHERICAL_TRIANGLE_MAX_SR, SPHERICAL_TRIANGLE_MIN_SR, SphericalTriangle, arvo_triangle,

@@ -101,3 +101,27 @@ impl<L: Math, const N: usize> EdgePlanes<L, N> {
         inside
     }
 }
+
+/// A power of two that brings a magnitude m into [2⁻¹⁶, 2¹⁶] (for m from 2⁻¹¹² to 2¹¹²; 1 for
+/// NaN): multiplying by it is exact, so a problem that depends only on ratios (directions, solid
+/// angles) is solved bit for bit as it would be at m's own scale, but with squares and cubes far
+/// from overflow and underflow.
+#[inline(always)]
+pub(crate) fn pow2_scale<L: Math>(m: L) -> L {
+    let mut scale = L::ONE;
+    let mut m = m;
+    // 2^±64, 2^±32, 2^±16 (core has no powi without std).
+    for (big, small) in [
+        (1.8446744073709552e19, 5.421010862427522e-20),
+        (4294967296.0, 2.3283064365386963e-10),
+        (65536.0, 1.52587890625e-5),
+    ] {
+        let (big, small) = (L::c(big), L::c(small));
+        let down = m.gt(big);
+        let up = m.lt(small);
+        let k = L::select(down, small, L::select(up, big, L::ONE));
+        scale = scale * k;
+        m = m * k;
+    }
+    scale
+}

@@ -2,10 +2,10 @@
 //! area fallback where spherical sampling is not worth it.
 //!
 //! The rectangle is `corner + s·ex + t·ey`, s, t ∈ [0, 1], relative to the shading point, with
-//! `ex` ⟂ `ey`; a parallelogram whose edges are further than 1e-4 from orthogonal is sampled by
-//! area, exactly. The algorithm works in the rectangle's frame: x̂ along ex, ŷ along
-//! ey, the plane at distance d from the shading point, the rectangle [x0, x1] × [y0, y1] in it,
-//! and (0, 0) the foot of the perpendicular from the shading point.
+//! `ex` ⟂ `ey`; a parallelogram whose edges are further than 2e-6 from orthogonal (as the cosine
+//! between them) is sampled by area, exactly. The algorithm works in the rectangle's frame: x̂
+//! along ex, ŷ along ey, the plane at distance d from the shading point, the rectangle
+//! [x0, x1] × [y0, y1] in it, and (0, 0) the foot of the perpendicular from the shading point.
 //!
 //! # The map without cancellation
 //!
@@ -58,7 +58,7 @@ use crate::lane::{Lane, V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::warp::common::clamp_u;
-use crate::warp::polygon::area_pdf_solid_angle;
+use crate::warp::polygon::{area_pdf_solid_angle, pow2_scale};
 
 /// Below this solid angle (sr) the rectangle is sampled by area.
 ///
@@ -79,6 +79,15 @@ pub const SPHERICAL_RECTANGLE_MIN_SR: f32 = 1.0e-6;
 /// has a pdf that varies by orders of magnitude across it. (The old form reached 8e-5 at
 /// 6.2 sr, which is why this was 6.)
 pub const SPHERICAL_RECTANGLE_MAX_SR: f32 = core::f32::consts::TAU;
+/// The largest ratio of a rectangle's size (|ex| + |ey|) to its plane's distance from the
+/// shading point that the rectangle's f32 set-up and inverse reach. The slab solid angles
+/// multiply powers of the distance that leave f32's range beyond it: measured, the inverse gave
+/// NaN for none of 2000 random samples at 2⁴⁰ and a third of them at 2⁴², but at a corner of a
+/// light of 3.7 sr already at 1.7e9; and at 5e11 (with an aspect ratio of 3e11) the set-up
+/// called a light degenerate from one corner and not from another (all found by the `spherical`
+/// fuzz target). Beyond this limit, 1e7, the inverse of a spherically sampled rectangle is NaN,
+/// and sampling may find the light degenerate (pdf 0).
+pub const SPHERICAL_RECTANGLE_INVERSE_REACH: f32 = 1.0e7;
 
 /// How far outside the rectangle, as the sine of the angle to an edge's plane, a direction still
 /// counts as inside, in units of ε·(1 + R/r) (ε = 2⁻²³, R = |corner| + |ex| + |ey|, r a lower
@@ -138,6 +147,9 @@ struct Setup<L: Math> {
     slack: L,
     valid: L::Mask,
     by_area: L::Mask,
+    /// True where the spherical inverse is out of f32's range: see
+    /// [`SPHERICAL_RECTANGLE_INVERSE_REACH`].
+    beyond_reach: L::Mask,
 }
 
 /// The strip y0 ≤ y ≤ y1 of the plane at distance d, in the rectangle's frame, and its lune:
@@ -338,30 +350,6 @@ fn shifted_dot<L: Math>(p: V3<L>, e: V3<L>) -> L {
     L::dot_wide([x, y, z], [e.x, e.y, e.z]) + V3::new(xl, yl, zl).dot(e)
 }
 
-/// A power of two that brings a magnitude m into [2⁻¹⁶, 2¹⁶] (for m from 2⁻¹¹² to 2¹¹²; 1 for
-/// NaN): multiplying by it is exact, so a problem that depends only on ratios (directions, solid
-/// angles) is solved bit for bit as it would be at m's own scale, but with squares and cubes far
-/// from overflow and underflow.
-#[inline(always)]
-fn pow2_scale<L: Math>(m: L) -> L {
-    let mut scale = L::ONE;
-    let mut m = m;
-    // 2^±64, 2^±32, 2^±16 (core has no powi without std).
-    for (big, small) in [
-        (1.8446744073709552e19, 5.421010862427522e-20),
-        (4294967296.0, 2.3283064365386963e-10),
-        (65536.0, 1.52587890625e-5),
-    ] {
-        let (big, small) = (L::c(big), L::c(small));
-        let down = m.gt(big);
-        let up = m.lt(small);
-        let k = L::select(down, small, L::select(up, big, L::ONE));
-        scale = scale * k;
-        m = m * k;
-    }
-    scale
-}
-
 #[inline(always)]
 fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
     // The geometry at a scale where its squares and cubes cannot overflow or underflow (the
@@ -375,12 +363,27 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
     let xh = ex.scale(L::ONE / exl);
     let yh = ey.scale(L::ONE / eyl);
     // The plane's normal and offset in f64 (products of f32 are exact there): in f32 the
-    // offset h = corner·(ex × ey) carries ε|corner||ex||ey|, which for a rectangle seen at a
-    // grazing angle is a large part of the distance d = |h|/|ex × ey| that shapes the map.
+    // offset h = v·(ex × ey) carries ε|v||ex||ey|, which for a rectangle seen at a grazing
+    // angle is a large part of the distance d = |h|/|ex × ey| that shapes the map. Even in f64
+    // it carries ε|v| of d, so v is the corner nearest the shading point: from a far corner, a
+    // point on the light's own corner got d = 1e-15·|v| and a solid angle of π (found by the
+    // `spherical` fuzz target).
+    let c1 = corner + ex;
+    let c2 = c1 + ey;
+    let c3 = corner + ey;
+    let nearer = |(p, lp): (V3<L>, L), (q, lq): (V3<L>, L)| {
+        let m = lp.lt(lq);
+        (V3::select(m, p, q), L::select(m, lp, lq))
+    };
+    let (v, nearest2) = [c1, c2, c3]
+        .into_iter()
+        .fold((corner, corner.dot(corner)), |acc, c| {
+            nearer((c, c.dot(c)), acc)
+        });
     let a = |v: V3<L>| [v.x, v.y, v.z];
     let [nx, ny, nz] = L::cross_wide(a(ex), a(ey));
     let n = V3::new(nx, ny, nz);
-    let h = L::plane_dot(a(corner), [L::ZERO; 3], a(ex), a(ey));
+    let h = L::plane_dot(a(v), [L::ZERO; 3], a(ex), a(ey));
     let nn = n.dot(n);
     let d = h.abs() / nn.sqrt();
     // The foot of the perpendicular, the frame's origin: samples are formed from it, as
@@ -436,9 +439,6 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
     let omega = slab(&col0, &col1, exl, &strip);
 
     let sign = L::ONE.copysign(h);
-    let c1 = corner + ex;
-    let c2 = c1 + ey;
-    let c3 = corner + ey;
     // Each edge's plane, its normal p × e in f64: an f32 cross product would turn it by up to
     // ε·|p|/d (the edge is nearly radial when the light is seen at a grazing angle), and the
     // slack would have to grow with it.
@@ -462,8 +462,9 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
     let slack = -(L::c(INSIDE_SLACK) * (L::ONE + reach / near));
 
     // d ≈ 0: the shading point lies in the rectangle's plane (to within rounding), where VOS may
-    // still report up to 4π.
-    let valid = d.gt(L::c(1e-6) * corner.length())
+    // still report up to 4π: d must exceed 1e-6 of the distance to the nearest corner, the
+    // same whichever corner describes the rectangle.
+    let valid = d.gt(L::c(1e-6) * nearest2.sqrt())
         & omega.gt(L::ZERO)
         & omega.is_finite()
         & exl.gt(L::ZERO)
@@ -471,15 +472,20 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
         & (x0 + x1 + y0 + y1 + d).is_finite()
         & n.dot(n).is_finite();
     let map_ok = (l0 + r1 + dist0 + dist1 + psi).is_finite() & l0.ge(L::ZERO) & r1.ge(L::ZERO);
-    // Ureña's map needs a rectangle: a parallelogram whose edges are further than 1e-4 from
-    // orthogonal (rounding leaves f32 edges about 1e-8 off) is sampled by area, whose pdf and
-    // inside test hold for any parallelogram.
-    let skewed = cos_xy.abs().gt(L::c(1e-4));
+    // Ureña's map needs a rectangle: where the edges are not orthogonal, Ω (and with it the pdf)
+    // is off by about 1.5·|cos| (measured against the parallelogram's exact Ω: 1.5e-4 at 1e-4,
+    // 2e-6 at 1e-6). Edges further than 2e-6 from orthogonal are sampled by area, whose pdf and
+    // inside test hold for any parallelogram; f32 rounding leaves orthogonal edges about 1e-7
+    // off, well inside. (The test was 1e-4 until the fuzz target found a strip whose Ω from one
+    // corner was 7.5e-5 off.)
+    let skewed = cos_xy.abs().gt(L::c(2e-6));
     let by_area = omega.lt(L::c(SPHERICAL_RECTANGLE_MIN_SR as f64))
         | omega.gt(L::c(SPHERICAL_RECTANGLE_MAX_SR as f64))
         | !map_ok
         | skewed;
     let area = nn.sqrt();
+    let beyond_reach =
+        !by_area & (exl + eyl).gt(L::c(SPHERICAL_RECTANGLE_INVERSE_REACH as f64) * d);
     Setup {
         given_corner,
         scale,
@@ -510,6 +516,7 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
         slack,
         valid,
         by_area,
+        beyond_reach,
     }
 }
 
@@ -639,7 +646,8 @@ impl<P: Point3> core::fmt::Debug for SphericalRectangle<P> {
 
 impl<P: Point3<Lane = L>, L: Math> SphericalRectangle<P> {
     /// The rectangle corner + s·ex + t·ey, s, t ∈ [0, 1], relative to the shading point, with
-    /// ex ⟂ ey (a parallelogram with a cosine above 1e-4 between its edges is sampled by area).
+    /// ex ⟂ ey (a parallelogram whose edges are further than 2e-6 from orthogonal is sampled
+    /// by area).
     #[inline]
     pub fn new(corner: P, ex: P, ey: P) -> Self {
         Self {
@@ -747,7 +755,7 @@ impl<P: Point3<Lane = L>, L: Math> SphericalRectangle<P> {
         let u1 = h_diff(s.strip.y0, y, y - s.strip.y0, ra, ry, rho)
             / h_diff(s.strip.y0, s.strip.y1, s.strip.dy, ra, rb, rho);
         let u = clamp_u(V2::select(s.by_area, st, V2::new(u0, u1)));
-        Point2::from_lanes(u.nan_where(p.any_nan()))
+        Point2::from_lanes(u.nan_where(p.any_nan() | s.beyond_reach))
     }
 }
 
@@ -767,11 +775,12 @@ pub fn urena_rectangle<P: Point2>(u: P, corner: P::Vec3, ex: P::Vec3, ey: P::Vec
 /// Ureña et al.'s map (2013) in a form without cancellation (see the module's documentation),
 /// uniform in solid angle with pdf 1/Ω, Ω by Van Oosterom–Strackee. Below
 /// [`SPHERICAL_RECTANGLE_MIN_SR`] or above [`SPHERICAL_RECTANGLE_MAX_SR`], and for a
-/// parallelogram whose edges are further than 1e-4 from orthogonal, it samples by area and
+/// parallelogram whose edges are further than 2e-6 from orthogonal, it samples by area and
 /// returns the exact converted pdf.
 ///
-/// u is clamped to [0, 1]². Seen edge-on (the shading point within 1e-6 rad of the plane), or
-/// degenerate, the pdf is 0 and the point is `corner`. NaN in u gives pdf 0 and `corner`.
+/// u is clamped to [0, 1]². Seen edge-on (the shading point closer to the plane than 1e-6 of its
+/// distance to the nearest corner), or degenerate, the pdf is 0 and the point is `corner`. NaN in
+/// u gives pdf 0 and `corner`.
 #[inline]
 pub fn spherical_rectangle<P: Point2<Lane = L>, L: Math>(
     u: P,
@@ -799,7 +808,9 @@ pub fn spherical_rectangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, corner: P, ex
 /// [0, 1]².
 ///
 /// Spherically: u₀ is the solid angle of the slab [x0, x] over the whole, u₁ the fraction of the
-/// elevation sine h between the slab's bottom and top edges. By area: p's (s, t). NaN gives NaN.
+/// elevation sine h between the slab's bottom and top edges. By area: p's (s, t). NaN gives NaN,
+/// and so does a spherically sampled rectangle larger than [`SPHERICAL_RECTANGLE_INVERSE_REACH`]
+/// times its distance from the shading point.
 #[inline]
 pub fn spherical_rectangle_inverse<P: Point3<Lane = L>, L: Math>(
     p: P,

@@ -10,7 +10,7 @@ use crate::lane::{Mask, V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::warp::common::clamp_u;
-use crate::warp::polygon::{EdgePlanes, area_pdf_from_cos, vos_solid_angle};
+use crate::warp::polygon::{EdgePlanes, area_pdf_from_cos, pow2_scale, vos_solid_angle};
 use crate::warp::triangle::{uniform_triangle, uniform_triangle_inverse};
 
 /// Below this solid angle (sr) the triangle is sampled by area.
@@ -30,7 +30,7 @@ pub const SPHERICAL_TRIANGLE_MAX_SR: f32 = 6.0;
 /// Everything the sampler, pdf and inverse need, computed once per triangle.
 #[derive(Clone, Copy)]
 struct Setup<L: Math> {
-    /// The vertices as given.
+    /// The vertices as given, times `scale`'s power of two.
     a: V3<L>,
     b: V3<L>,
     c: V3<L>,
@@ -44,6 +44,8 @@ struct Setup<L: Math> {
     uc: V3<L>,
     /// Plane normal (b−a)×(c−a), unnormalised.
     n: V3<L>,
+    /// The inverse of the power of two the vertices are scaled by.
+    unscale: L,
     omega: L,
     /// δ = α − Ω/2 (positive in every spherical triangle) and π − α, α the interior angle at
     /// A: the accurate terms of sin(α − E/2) (see `arvo`).
@@ -65,27 +67,46 @@ struct Setup<L: Math> {
 
 #[inline(always)]
 fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
+    // The vertices at a scale where the products of three lengths cannot overflow or underflow,
+    // by an exact power of two: directions, Ω and pdfs depend only on ratios, so they come out
+    // bit for bit as at the given scale, but a triangle 1e-14 across keeps its solid angle.
+    let amax = |v: V3<L>| v.x.abs().max(v.y.abs()).max(v.z.abs());
+    let scale = pow2_scale(amax(a).max(amax(b)).max(amax(c)));
+    let (a, b, c) = (a.scale(scale), b.scale(scale), c.scale(scale));
+    // The spherical quantities (unit vertices, arcs, the angle at A) depend on each vertex's
+    // direction alone, so each vertex gets its own power of two for them: cross products of two
+    // vertices and their squares then stay in range however much nearer one vertex is than the
+    // others (a vertex 2⁻⁴⁵ as far as the others underflowed them in f32; found by the fuzz
+    // target). The plane, its offset and area sampling keep the vertices as scaled above.
+    let own = |v: V3<L>| v.scale(pow2_scale(amax(v)));
+    let (pa, pb, pc) = (own(a), own(b), own(c));
+    let (pla, plb, plc) = (pa.length(), pb.length(), pc.length());
+    let (ua, ub, uc) = (
+        pa.scale(L::ONE / pla),
+        pb.scale(L::ONE / plb),
+        pc.scale(L::ONE / plc),
+    );
     // Arvo's map sweeps Ĉ along the arc AC and then samples the arc from B to Ĉ, whose great
     // circle is ill-conditioned when B and Ĉ are nearly opposite (its f32 error is ε over the
     // sine of the arc: 9e-5 for a straddling triangle). Where an arc exceeds 154° (cosine below
     // −0.9), relabel (keeping the winding) so that it is AC and B the vertex opposite it, which
     // keeps B away from every Ĉ. The arcs of a triangle sum to less than 2π, so at most one
     // arc is that long, and the choice is the same in every width but within an ulp of −0.9.
-    let (la, lb, lc) = (a.length(), b.length(), c.length());
-    let long = |p: V3<L>, q: V3<L>, lp: L, lq: L| p.dot(q).lt(L::c(-0.9) * (lp * lq));
-    let ab_longest = long(a, b, la, lb);
-    let bc_longest = long(b, c, lb, lc) & !ab_longest;
+    let long = |p: V3<L>, q: V3<L>| p.dot(q).lt(L::c(-0.9));
+    let ab_longest = long(ua, ub);
+    let bc_longest = long(ub, uc) & !ab_longest;
     let rot =
         |x: V3<L>, y: V3<L>, z: V3<L>| V3::select(ab_longest, y, V3::select(bc_longest, z, x));
-    // Area sampling and the plane keep the vertices as given.
+    // Area sampling and the plane keep the vertices in the order given.
     let given = (a, b, c);
     let (a, b, c) = (rot(a, b, c), rot(b, c, a), rot(c, a, b));
+    let (pa, pb, pc) = (rot(pa, pb, pc), rot(pb, pc, pa), rot(pc, pa, pb));
+    let (ua, ub, uc) = (rot(ua, ub, uc), rot(ub, uc, ua), rot(uc, ua, ub));
     let rotl = |x: L, y: L, z: L| L::select(ab_longest, y, L::select(bc_longest, z, x));
-    let (la, lb, lc) = (rotl(la, lb, lc), rotl(lb, lc, la), rotl(lc, la, lb));
-    let (ua, ub, uc) = (
-        a.scale(L::ONE / la),
-        b.scale(L::ONE / lb),
-        c.scale(L::ONE / lc),
+    let (pla, plb, plc) = (
+        rotl(pla, plb, plc),
+        rotl(plb, plc, pla),
+        rotl(plc, pla, plb),
     );
     let e1 = b - a;
     let e2 = c - a;
@@ -103,18 +124,20 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
         let [x, y, z] = L::cross_wide([p.x, p.y, p.z], [q.x, q.y, q.z]);
         V3::new(x, y, z)
     };
-    let nab = wide_cross(a, b);
-    let nac = wide_cross(a, c);
+    let nab = wide_cross(pa, pb);
+    let nac = wide_cross(pa, pc);
     let (lab, lac) = (nab.length(), nac.length());
-    let (sin_c, cos_c) = (lab / (la * lb), ua.dot(ub));
-    let (sin_b, cos_b) = (lac / (la * lc), ua.dot(uc));
-    // α as atan2(sin, cos), accurate at every angle (acos is not, near 0 and π). sin α from
-    // |(a×b)×(a×c)| = |a||a·(b×c)| = |a||h|, the well-conditioned offset, rather than from the
-    // cross product of two nearly parallel normals, which loses α's relative precision when α is
-    // small.
-    let inv = L::ONE / (lab * lac);
-    let cos_alpha = (nab.dot(nac) * inv).clamp(L::c(-1.0), L::ONE);
-    let sin_alpha = (la * h.abs() * inv).min(L::ONE);
+    let (sin_c, cos_c) = (lab / (pla * plb), ua.dot(ub));
+    let (sin_b, cos_b) = (lac / (pla * plc), ua.dot(uc));
+    // α as atan2(sin, cos), accurate at every angle (acos is not, near 0 and π). sin α from the
+    // triple product of the unit vertices, â·(b̂ × ĉ) = sin b sin c sin α, which VOS's f64 terms
+    // give accurately, rather than from the cross product of two nearly parallel normals, which
+    // loses α's relative precision when α is small.
+    let cos_alpha = nab
+        .scale(L::ONE / lab)
+        .dot(nac.scale(L::ONE / lac))
+        .clamp(L::c(-1.0), L::ONE);
+    let sin_alpha = (triple.abs() / (sin_b * sin_c)).min(L::ONE);
     let one_minus_cos_c = versine(sin_c, cos_c);
     let one_minus_cos_b = versine(sin_b, cos_b);
     // The tangent as (a × c) × a, from the plane's normal: uc − ua(ua·uc) would cancel for
@@ -129,17 +152,26 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
 
     // Collinear vertices can leave a rounding-sized normal, and a shading point in the plane a
     // rounding-sized triple product (with FMA, say), while VOS still reports up to 2π. Neither is
-    // a light: the plane must be tilted by more than 1e-6 rad both ways.
+    // a light: the triangle's height over its longest edge, and the distance to the plane over
+    // the distance to the nearest vertex, must both exceed 1e-6. The second compares h with its
+    // rounding, which `triangle_terms` keeps to ε|v|·|n| with v that nearest vertex. Both are
+    // measured without a favoured vertex, so that the verdict does not depend on the vertices'
+    // order (measured from A, a point just below a vertex of a huge triangle was a light in one
+    // order and edge-on in another, and a sliver collinear in one and not in another: found by
+    // the `spherical` fuzz target).
     let nn = n.length();
-    let valid = nn.gt(L::c(1e-6) * e1.length() * e2.length())
-        & (h / la).abs().gt(L::c(1e-6) * nn)
+    let near = a.length().min(b.length()).min(c.length());
+    let e3 = c - b;
+    let longest = e1.dot(e1).max(e2.dot(e2)).max(e3.dot(e3));
+    let valid = nn.gt(L::c(1e-6) * longest)
+        & (h / near).abs().gt(L::c(1e-6) * nn)
         & omega.gt(L::ZERO)
         & omega.is_finite()
         & delta.is_finite()
         & n.dot(n).is_finite()
-        & la.gt(L::ZERO)
-        & lb.gt(L::ZERO)
-        & lc.gt(L::ZERO);
+        & pla.gt(L::ZERO)
+        & plb.gt(L::ZERO)
+        & plc.gt(L::ZERO);
     let by_area = omega.lt(L::c(SPHERICAL_TRIANGLE_MIN_SR as f64))
         | omega.gt(L::c(SPHERICAL_TRIANGLE_MAX_SR as f64))
         | !delta.is_finite()
@@ -149,12 +181,13 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
         b: given.1,
         c: given.2,
         // The edge planes a × b, b × c, c × a (rotating the labels keeps the winding).
-        edges: EdgePlanes::new([nab, wide_cross(b, c), -nac], h, omega),
+        edges: EdgePlanes::new([nab, wide_cross(pb, pc), -nac], h, omega),
         h,
         ua,
         ub,
         uc,
         n,
+        unscale: L::ONE / scale,
         omega,
         delta,
         pi_minus_alpha,
@@ -232,11 +265,19 @@ fn arvo<L: Math>(s: &Setup<L>, u: V2<L>) -> V3<L> {
 }
 
 /// The point of the plane hit by unit direction `w`, as barycentrics (b₀, b₁, b₂), and whether
-/// the hit lies in front of the origin.
+/// the hit lies in front of the origin. The distance h / (w·n) takes both terms from the f64
+/// forms: in f32, w·n cancels for a triangle seen nearly edge-on, and a·n for a far plane, and
+/// the inverse was NaN for a light of 2.6e-10 sr (found by the `spherical` fuzz target).
 #[inline(always)]
-fn barycentrics<L: Math>(w: V3<L>, a: V3<L>, b: V3<L>, c: V3<L>, n: V3<L>) -> (V3<L>, L::Mask) {
-    let wn = w.dot(n);
-    let t = a.dot(n) / wn;
+fn barycentrics<L: Math>(w: V3<L>, s: &Setup<L>) -> (V3<L>, L::Mask) {
+    let (a, b, c, n) = (s.a, s.b, s.c, s.n);
+    let wn = L::plane_dot(
+        [w.x, w.y, w.z],
+        [a.x, a.y, a.z],
+        [b.x, b.y, b.z],
+        [c.x, c.y, c.z],
+    );
+    let t = s.h / wn;
     let d = w.scale(t) - a;
     let nn = n.dot(n);
     let b1 = d.cross(c - a).dot(n) / nn;
@@ -259,6 +300,11 @@ pub fn arvo_triangle<P: Point2>(u: P, a: P::Vec3, b: P::Vec3, c: P::Vec3) -> P::
 ///
 /// `P` is the width: `SphericalTriangle<Vec3>`, `SphericalTriangle<Vec3x8>` (eight triangles,
 /// lane by lane) or `SphericalTriangle<DVec3>`.
+///
+/// Ω, and whether the triangle is degenerate, do not depend on the order or winding of the
+/// vertices (within the accuracy above) while their distances from the shading point are
+/// within a factor 2²⁶ of each other. Beyond that the set-up's f64 differences of vertices are
+/// rounded, and for a shading point within that rounding of an edge Ω may depend on the order.
 ///
 /// ```
 /// use glam::{Vec2, Vec3};
@@ -298,11 +344,12 @@ impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
         self.s.by_area
     }
 
-    /// The plane's offset h = v·n and its normal n = (b − a) × (c − a), unnormalised: the
-    /// distance along unit direction w to the plane is h / (w·n).
+    /// The plane as (h, n): n a positive multiple of (b − a) × (c − a), and h its offset,
+    /// scaled so that the distance along unit direction w to the plane is h / (w·n) and h has
+    /// the sign of v·n for any vertex v.
     #[inline]
     pub fn plane(&self) -> (L, P) {
-        (self.s.h, P::from_lanes(self.s.n))
+        (self.s.h * self.s.unscale, P::from_lanes(self.s.n))
     }
 
     /// See [`spherical_triangle`].
@@ -316,7 +363,11 @@ impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
         let w_sph = if (!s.by_area).any() { arvo(s, u) } else { zero };
         let w_area = if s.by_area.any() {
             let bary = uniform_triangle(u);
-            (s.a.scale(bary.x) + s.b.scale(bary.y) + s.c.scale(bary.z)).normalize()
+            let p = s.a.scale(bary.x) + s.b.scale(bary.y) + s.c.scale(bary.z);
+            // Normalised at its own scale: a point near a vertex 2⁻⁷⁰ as far as the others has
+            // squares below f32's normal range, and its direction came out 4e-5 short of unit.
+            let amax = p.x.abs().max(p.y.abs()).max(p.z.abs());
+            p.scale(pow2_scale(amax)).normalize()
         } else {
             zero
         };
@@ -360,7 +411,7 @@ impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
     pub fn inverse(&self, w: P) -> P::Vec2 {
         let s = &self.s;
         let w = w.to_lanes();
-        let (bary, _) = barycentrics(w, s.a, s.b, s.c, s.n);
+        let (bary, _) = barycentrics(w, s);
         let u_area = uniform_triangle_inverse(bary);
 
         let plane_bw = s.ub.cross(w);
@@ -384,8 +435,11 @@ impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
             L::ONE,
         );
         let u0 = sub / s.omega;
-        // w = B leaves Ĉ undefined; any u₀ with u₁ = 0 maps there.
-        let at_b = dw.dot(dw).eq(L::ZERO);
+        // w along B leaves Ĉ undefined; any u₀ with u₁ = 0 maps there. "Along" is where Ĉ could
+        // not be normalised, not w = B: the map's own direction for B can differ from B/|B| by an
+        // ulp, and in a sliver the planes through B, w and A, C can be parallel to f32's
+        // precision; either way Ĉ was 0/0 (both found by the `spherical` fuzz target).
+        let at_b = !c_hat.dot(c_hat).is_finite();
         let u_sph = V2::new(L::select(at_b, L::ZERO, u0), L::select(at_b, L::ZERO, u1));
         let u = clamp_u(V2::select(s.by_area, u_area, u_sph));
         Point2::from_lanes(u.nan_where(w.any_nan()))
@@ -401,8 +455,8 @@ impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
 /// [`SPHERICAL_TRIANGLE_MAX_SR`] it samples by area instead and returns the exact converted pdf.
 ///
 /// u is clamped to [0, 1]². Degenerate triangles (coincident or collinear vertices, the shading
-/// point within 1e-6 rad of the triangle's plane, non-finite input) give pdf 0 and direction +z,
-/// and so does NaN in u.
+/// point closer to the triangle's plane than 1e-6 of its distance to the nearest vertex,
+/// non-finite input) give pdf 0 and direction +z, and so does NaN in u.
 #[inline]
 pub fn spherical_triangle<P: Point2<Lane = L>, L: Math>(
     u: P,

@@ -1,0 +1,205 @@
+//! Inputs on which the spherical triangle and rectangle once failed, found by the `spherical`
+//! fuzz target, each with the fact that must hold. The reference solid angles are Van Oosterom
+//! and Strackee's formula (1983) evaluated in 80-digit decimal arithmetic on the exact f32
+//! inputs, outside this crate.
+
+use glam::{DVec3, Vec2, Vec3};
+use mcsample::warp::{SphericalRectangle, SphericalTriangle};
+use mcsample::x8::{Vec2x8, Vec3x8};
+
+/// Every order and winding of the triangle's vertices.
+fn orders(a: Vec3, b: Vec3, c: Vec3) -> [[Vec3; 3]; 6] {
+    [
+        [a, b, c],
+        [b, c, a],
+        [c, a, b],
+        [a, c, b],
+        [c, b, a],
+        [b, a, c],
+    ]
+}
+
+/// Ω in every order within `tol` relative of `want`, and the packet form of each order equal to
+/// the scalar form.
+fn solid_angle_in_every_order(tri: [Vec3; 3], want: f64, tol: f64) {
+    for [a, b, c] in orders(tri[0], tri[1], tri[2]) {
+        let omega = SphericalTriangle::new(a, b, c).solid_angle();
+        let err = (f64::from(omega) / want - 1.0).abs();
+        assert!(
+            err <= tol,
+            "({a}, {b}, {c}): Ω {omega:e}, want {want:e} (relative {err:e})"
+        );
+        let packet = SphericalTriangle::new(Vec3x8::splat(a), Vec3x8::splat(b), Vec3x8::splat(c));
+        assert_eq!(
+            packet.solid_angle().to_array()[0].to_bits(),
+            omega.to_bits()
+        );
+    }
+}
+
+/// The shading point 0.0154 from the plane of a triangle 27 000 across, right below vertex C:
+/// a wedge of 0.417 sr. The edge-on test measured the tilt from vertex A, which is 27 000
+/// away, so in that order the light was "edge-on" and Ω 0.
+#[test]
+fn point_below_a_vertex_of_a_huge_triangle() {
+    let tri = [
+        Vec3::new(-25347.02, 0.015391813, -11234.886),
+        Vec3::new(-13759.943, 0.015391813, -2.5833975e-37),
+        Vec3::new(0.0, 0.015391813, -2.5833975e-37),
+    ];
+    solid_angle_in_every_order(tri, 0.4172201533043866, 1e-6);
+}
+
+/// One vertex 2.7e5 times as far as the others. The plane offset h = v·n, formed from that
+/// vertex, lost 1.2e-5 of itself even in f64, so Ω depended on the order by as much.
+#[test]
+fn one_vertex_far_beyond_the_others() {
+    let tri = [
+        Vec3::new(-2.1902557e24, -2.190289e24, -2.190289e24),
+        Vec3::new(4.1194758e-13, -8.0297587e18, -8.0297587e18),
+        Vec3::new(2.5900077e-8, -3.06598e18, -8.0297587e18),
+    ];
+    solid_angle_in_every_order(tri, 0.13549767027192303, 1e-6);
+}
+
+/// A triangle on the three axes, one vertex on each: an octant's face, Ω = π/2 exactly in
+/// every order, at whatever scale. Given in subnormals 2¹¹ apart, the product of the two arc
+/// normals' lengths underflowed in f32 and the set-up called the triangle degenerate.
+#[test]
+fn octant_face_at_every_scale() {
+    let tri = [
+        Vec3::new(1.04e-43, 0.0, 0.0),
+        Vec3::new(0.0, 0.0, 1e-45),
+        Vec3::new(0.0, 2.87e-42, 0.0),
+    ];
+    let mut tri = tri;
+    // 2⁻¹⁴⁹ … 2¹⁰² for the smallest and largest coordinates.
+    for _ in 0..7 {
+        solid_angle_in_every_order(tri, core::f64::consts::FRAC_PI_2, 1e-6);
+        tri = tri.map(|v| v * 2f32.powi(40));
+    }
+}
+
+/// Vertices at f32::MAX, whose edges overflow f32: the set-up scales them by a power of two
+/// first, so the triangle is a light of 0.959 sr, not a degenerate one (it was, before the
+/// scaling; the hard cases listed it as such).
+#[test]
+fn vertices_at_the_largest_f32() {
+    let tri = [
+        Vec3::splat(f32::MAX),
+        Vec3::new(f32::MAX, -f32::MAX, 1.0),
+        Vec3::new(0.1, -0.5, 1.1),
+    ];
+    solid_angle_in_every_order(tri, 0.9591976762425528, 1e-6);
+}
+
+/// The inverse of a sample at vertex B, where Ĉ (the great circle through B and w meeting the
+/// arc AC) is undefined. The map's direction for B differs from B/|B| by an ulp, and in a sliver
+/// the two planes can be parallel to f32's precision; Ĉ came out 0/0 and the inverse NaN. Any
+/// u₀ with u₁ = 0 maps to B, and the inverse must give such a u.
+#[test]
+fn inverse_at_the_vertex_b() {
+    let triangles = [
+        [
+            Vec3::new(-1.2808539e-9, -1.2855903e-9, -1.2855903e-9),
+            Vec3::new(2.9766255e-8, 0.0, 0.0),
+            Vec3::new(1.0206576e-8, -6.7515947e-7, 6.7353966e-7),
+        ],
+        [
+            Vec3::new(0.04620098, 0.04620098, 0.04620098),
+            Vec3::new(0.04620098, 0.04620098, 4.5475066e-13),
+            Vec3::new(0.046200305, 0.046201654, 0.029106617),
+        ],
+    ];
+    for [a, b, c] in triangles {
+        let t = SphericalTriangle::new(a, b, c);
+        let (w, pdf) = t.sample(Vec2::ZERO);
+        assert!(pdf > 0.0, "({a}, {b}, {c}): pdf {pdf}");
+        assert!(
+            w.angle_between(b) < 1e-6,
+            "u = 0 is vertex B: {w} against {b}"
+        );
+        let u = t.inverse(w);
+        assert!(
+            u.is_finite() && (0.0..=1.0).contains(&u.x) && u.y == 0.0,
+            "inverse {u} at B = {w}"
+        );
+        let u8 = SphericalTriangle::new(Vec3x8::splat(a), Vec3x8::splat(b), Vec3x8::splat(c))
+            .inverse(Vec3x8::splat(w))
+            .lane(0);
+        assert_eq!(
+            [u8.x.to_bits(), u8.y.to_bits()],
+            [u.x.to_bits(), u.y.to_bits()]
+        );
+        let (w8, _) = SphericalTriangle::new(Vec3x8::splat(a), Vec3x8::splat(b), Vec3x8::splat(c))
+            .sample(Vec2x8::splat(Vec2::ZERO));
+        assert_eq!(
+            w8.lane(0).to_array().map(f32::to_bits),
+            w.to_array().map(f32::to_bits)
+        );
+    }
+}
+
+/// The parallelogram's exact solid angle, as two triangles by Van Oosterom and Strackee in f64.
+fn parallelogram_solid_angle(corner: Vec3, ex: Vec3, ey: Vec3) -> f64 {
+    let vos = |a: DVec3, b: DVec3, c: DVec3| {
+        let t = a.dot(b.cross(c));
+        let (la, lb, lc) = (a.length(), b.length(), c.length());
+        let d = la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la;
+        2.0 * t.abs().atan2(d)
+    };
+    let p = [corner, corner + ex, corner + ex + ey, corner + ey].map(|v| v.as_dvec3());
+    vos(p[0], p[1], p[2]) + vos(p[0], p[2], p[3])
+}
+
+/// Ureña's map takes the edges as orthogonal, and Ω comes out about 1.5·|cos| off where they
+/// are not. The fuzz target found a strip 190 000 × 0.0028 with cos 4.6e-5, whose Ω from one
+/// corner was 7.5e-5 off: under the old test (cos > 1e-4) it was mapped as a rectangle. Every
+/// parallelogram here, at cosines from 0 to 1e-3 and seen from each corner, is either sampled by
+/// area (exact for any parallelogram) or has Ω within 1e-5 of the exact value; and edges as
+/// orthogonal as f32 rounding leaves them are still sampled spherically.
+#[test]
+fn skewed_parallelograms_are_sampled_by_area() {
+    let mut cases = vec![(
+        Vec3::new(0.0, -2.026389e-24, 2.1443386),
+        Vec3::new(-189796.0, -168.60199, 1.6187443e-27),
+        Vec3::new(2.6226044e-6, -0.0028078256, 1.2668323e-27),
+    )];
+    for (k, cos) in [0.0f32, 1e-7, 1e-6, 1.9e-6, 3e-6, 1e-5, 1e-4, 1e-3]
+        .into_iter()
+        .enumerate()
+    {
+        let c = Vec3::new(-0.6 + 0.1 * k as f32, -0.4, 0.7 + 0.2 * k as f32);
+        let (len, wid) = (1.0 + k as f32, 0.5);
+        let ex = Vec3::new(len, 0.0, 0.0);
+        let ey = Vec3::new(cos * wid, wid * (1.0 - cos * cos).sqrt(), 0.0);
+        cases.push((c, ex, ey));
+    }
+    for (c, ex, ey) in cases {
+        for (corner, e1, e2) in [
+            (c, ex, ey),
+            (c + ex, ey, -ex),
+            (c + ex + ey, -ex, -ey),
+            (c + ey, -ey, ex),
+        ] {
+            let r = SphericalRectangle::new(corner, e1, e2);
+            let exact = parallelogram_solid_angle(corner, e1, e2);
+            let err = (f64::from(r.solid_angle()) / exact - 1.0).abs();
+            assert!(
+                r.by_area() || err <= 1e-5,
+                "({corner}, {e1}, {e2}): Ω {err:e} off, sampled spherically"
+            );
+            let (p, pdf) = r.sample(Vec2::new(0.3, 0.7));
+            assert!(
+                pdf > 0.0 && r.pdf(p) == pdf,
+                "({corner}, {e1}, {e2}): pdf {pdf} at {p}"
+            );
+        }
+    }
+    // The control: edges orthogonal up to f32 rounding are a rectangle, sampled spherically,
+    // however long and thin.
+    let c = Vec3::new(0.0, -2.026389e-24, 2.1443386);
+    let ex = Vec3::new(-189796.0, -168.60199, 0.0);
+    let ey = Vec3::new(168.60199, -189796.0, 0.0) * (0.0028 / 189796.08);
+    assert!(!SphericalRectangle::new(c, ex, ey).by_area());
+}

@@ -163,9 +163,12 @@ pub struct AreaSample<V: Point3> {
     pub pdf: V::Lane,
 }
 
-/// Le where `front`, else 0: a light's radiance towards a point on its emitting side.
+/// Le where `front`, else 0: a light's radiance towards a point on its emitting side. NaN in Le
+/// comes out as the canonical quiet NaN, so both widths return the same bits (a signalling NaN
+/// came out quieted in one width and not in the other; found by the `lights` fuzz target).
 #[inline(always)]
 fn le_towards<L: Math>(front: L::Mask, le: V3<L>) -> V3<L> {
+    let le = V3::new(le.x.canon(), le.y.canon(), le.z.canon());
     V3::select(front, le, V3::all(L::ZERO))
 }
 

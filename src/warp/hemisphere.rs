@@ -53,12 +53,14 @@ pub fn cosine_hemisphere<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
 }
 
 /// pdf per steradian of [`cosine_hemisphere`]: cos θ/π for cos θ > 0, else 0 (the rim, below it,
-/// and NaN). cos θ decides the support, so it is all the pdf needs to see.
+/// and NaN). cos θ decides the support, so it is all the pdf needs to see. cos θ above 1, from a
+/// vector that is not unit, counts as 1, as for [`phong_lobe_pdf`](crate::warp::phong_lobe_pdf)
+/// (+∞ gave an infinite pdf; found by the `warps` fuzz target).
 #[inline(always)]
 pub fn cosine_hemisphere_pdf<L: Math>(cos_theta: L) -> L {
     L::select(
         cos_theta.gt(L::ZERO),
-        cos_theta * L::c(core::f64::consts::FRAC_1_PI),
+        cos_theta.min(L::ONE) * L::c(core::f64::consts::FRAC_1_PI),
         L::ZERO,
     )
 }

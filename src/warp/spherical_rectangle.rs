@@ -364,26 +364,20 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
     let yh = ey.scale(L::ONE / eyl);
     // The plane's normal and offset in f64 (products of f32 are exact there): in f32 the
     // offset h = v·(ex × ey) carries ε|v||ex||ey|, which for a rectangle seen at a grazing
-    // angle is a large part of the distance d = |h|/|ex × ey| that shapes the map. Even in f64
-    // it carries ε|v| of d, so v is the corner nearest the shading point: from a far corner, a
-    // point on the light's own corner got d = 1e-15·|v| and a solid angle of π (found by the
-    // `spherical` fuzz target).
+    // angle is a large part of the distance d = |h|/|ex × ey| that shapes the map. In f64 it
+    // carries about ε₆₄·|corner| of d: see `valid` below. (Not from the nearest corner: the other
+    // corners are f32 sums, rounded by ε₃₂ of themselves, which is far worse for a light nearly
+    // filling the hemisphere.)
     let c1 = corner + ex;
     let c2 = c1 + ey;
     let c3 = corner + ey;
-    let nearer = |(p, lp): (V3<L>, L), (q, lq): (V3<L>, L)| {
-        let m = lp.lt(lq);
-        (V3::select(m, p, q), L::select(m, lp, lq))
-    };
-    let (v, nearest2) = [c1, c2, c3]
+    let nearest2 = [c1, c2, c3]
         .into_iter()
-        .fold((corner, corner.dot(corner)), |acc, c| {
-            nearer((c, c.dot(c)), acc)
-        });
+        .fold(corner.dot(corner), |m, c| c.dot(c).min(m));
     let a = |v: V3<L>| [v.x, v.y, v.z];
     let [nx, ny, nz] = L::cross_wide(a(ex), a(ey));
     let n = V3::new(nx, ny, nz);
-    let h = L::plane_dot(a(v), [L::ZERO; 3], a(ex), a(ey));
+    let h = L::plane_dot(a(corner), [L::ZERO; 3], a(ex), a(ey));
     let nn = n.dot(n);
     let d = h.abs() / nn.sqrt();
     // The foot of the perpendicular, the frame's origin: samples are formed from it, as
@@ -463,8 +457,11 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
 
     // d ≈ 0: the shading point lies in the rectangle's plane (to within rounding), where VOS may
     // still report up to 4π: d must exceed 1e-6 of the distance to the nearest corner, the
-    // same whichever corner describes the rectangle.
+    // same whichever corner describes the rectangle, and 1e-14 of the corner's distance, well
+    // above the f64 rounding of h (from a far corner, a shading point on the light's own corner
+    // got d = 1e-15·|corner| and a solid angle of π; found by the `spherical` fuzz target).
     let valid = d.gt(L::c(1e-6) * nearest2.sqrt())
+        & d.gt(L::c(1e-14) * corner.length())
         & omega.gt(L::ZERO)
         & omega.is_finite()
         & exl.gt(L::ZERO)

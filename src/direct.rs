@@ -67,7 +67,7 @@ use glam::{Vec2, Vec3};
 
 use crate::estimate::roulette;
 use crate::frame::Frame;
-use crate::lane::{F32x8, Lane, Lane32, Mask, U32Lane, V2, V3};
+use crate::lane::{F32x8, Lane, Lane32, Mask, U32Lane, V2, V3, lane_of, zip_map};
 use crate::math::Math;
 use crate::mis::{self, OptimalMis, Reservoir};
 use crate::point::{Point2, Point3};
@@ -438,7 +438,7 @@ impl DirectLane for F32x8 {
     const WIDTH: usize = 8;
     #[inline(always)]
     fn lane(self, i: usize) -> f32 {
-        self.to_array()[i & 7]
+        lane_of(&self.to_array(), i)
     }
     #[inline(always)]
     fn from_fn(f: impl FnMut(usize) -> f32) -> Self {
@@ -459,7 +459,7 @@ impl DirectLane for F32x8 {
     }
     fn optimal_cross(a: &mis::OptimalMisX8, b: &mis::OptimalMisX8) -> F32x8 {
         let (ab, ba) = (a.estimate_with_alpha_of(b), b.estimate_with_alpha_of(a));
-        F32x8::new(core::array::from_fn(|i| (0.5 * (ab[i] + ba[i])) as f32))
+        F32x8::new(zip_map(ab, ba, |x, y| (0.5 * (x + y)) as f32))
     }
     fn optimal_balance(a: &mis::OptimalMisX8) -> F32x8 {
         F32x8::new(a.balance_estimate().map(|x| x as f32))
@@ -631,10 +631,12 @@ where
         let mut pmf = [0.0f32; 8];
         let index = L::from_fn(|i| {
             let c = self.lights.choose(u.lane(i));
-            pmf[i & 7] = c.pmf;
+            if let Some(p) = pmf.get_mut(i) {
+                *p = c.pmf;
+            }
             c.index as f32
         });
-        (index, L::from_fn(|i| pmf[i & 7]))
+        (index, L::from_fn(|i| lane_of(&pmf, i)))
     }
 
     /// The shadow ray to `to` for contribution `c`, with roulette driven by `ru`: `c` (divided
@@ -866,7 +868,7 @@ where
     /// balance heuristic. Per lane and channel, in f64.
     fn optimal(&mut self) -> V3<L> {
         let (nl, nb) = (self.n_light, self.n_bsdf);
-        let half = |n: u32, k: u32| f64::from(n / 2 + (n % 2) * (1 - k));
+        let half = |n: u32, k: u32| f64::from((n >> 1) + (n & 1) * (1 - k));
         let cross = nl >= OPTIMAL_MIN_SAMPLES && nb >= OPTIMAL_MIN_SAMPLES;
         let fold_counts = |k: u32| {
             if cross {
@@ -876,7 +878,7 @@ where
             }
         };
         // Per half, one accumulator per colour channel.
-        let mut acc = [0, 1].map(|k| {
+        let [mut acc0, mut acc1] = [0, 1].map(|k| {
             let (a, b) = fold_counts(k);
             [L::optimal(a, b); 3]
         });
@@ -885,7 +887,7 @@ where
                 L::optimal_push(a, f, pl, pb);
             }
         };
-        let fold = |j: u32| if cross { (j % 2) as usize } else { 0 };
+        let second = |j: u32| cross && j % 2 == 1;
         let (cl, cb) = (L::c(f64::from(nl)), L::c(f64::from(nb)));
         for s in 0..nl {
             let x = self.light_sample(s);
@@ -895,7 +897,7 @@ where
             let w = mis::balance(cl, x.pdf, cb, pb);
             let kept = self.shadow(x.fcos_le.scale(w), x.to, ru);
             let f = V3::select(w.gt(L::ZERO), scale_div(kept, w), V3::all(L::ZERO));
-            push(&mut acc[fold(s)], f, x.pdf, pb);
+            push(if second(s) { &mut acc1 } else { &mut acc0 }, f, x.pdf, pb);
         }
         for j in 0..nb {
             let s = nl + j;
@@ -910,16 +912,17 @@ where
             let w = mis::balance(cb, pb, cl, pl);
             let kept = self.along(wi, fcos, ru, |_| w / pb);
             let f = V3::select(w.gt(L::ZERO), scale_div(kept, w / pb), V3::all(L::ZERO));
-            push(&mut acc[fold(j)], f, pl, pb);
+            push(if second(j) { &mut acc1 } else { &mut acc0 }, f, pl, pb);
         }
-        let est = |c: usize| {
+        let est = |a: &L::Optimal, b: &L::Optimal| {
             if cross {
-                L::optimal_cross(&acc[0][c], &acc[1][c])
+                L::optimal_cross(a, b)
             } else {
-                L::optimal_balance(&acc[0][c])
+                L::optimal_balance(a)
             }
         };
-        V3::new(est(0), est(1), est(2))
+        let ([x0, x1, x2], [y0, y1, y2]) = (&acc0, &acc1);
+        V3::new(est(x0, y0), est(x1, y1), est(x2, y2))
     }
 
     /// RIS: N light-sampled candidates with target p̂ = luminance(f·Le·cos θ), one kept, one
@@ -934,21 +937,21 @@ where
             let x = self.light_sample(s);
             let target = luminance(x.fcos_le);
             let mut kept = [0.0f32; 8];
-            for (i, r) in res.iter_mut().enumerate().take(L::WIDTH) {
+            for (i, (r, k)) in res.iter_mut().zip(&mut kept).enumerate().take(L::WIDTH) {
                 r.push(s, f64::from(target.lane(i)), f64::from(x.pdf.lane(i)));
                 // The reservoir holds candidate s only if it has just taken it.
-                kept[i] = if r.chosen().is_some_and(|(y, _)| y == s) {
+                *k = if r.chosen().is_some_and(|(y, _)| y == s) {
                     1.0
                 } else {
                     0.0
                 };
             }
-            let m = L::from_fn(|i| kept[i & 7]).gt(L::ZERO);
+            let m = L::from_fn(|i| lane_of(&kept, i)).gt(L::ZERO);
             c = V3::select(m, x.fcos_le, c);
             to = V3::select(m, x.to, to);
         }
         // The RIS weight Σw/(M·p̂(y)): 0 where no candidate had weight.
-        let w = L::from_fn(|i| res[i & 7].chosen().map_or(0.0, |(_, w)| w as f32));
+        let w = L::from_fn(|i| lane_of(&res, i).chosen().map_or(0.0, |(_, w)| w as f32));
         let ru = self.u(0, 1).y;
         self.shadow(c.scale(w), to, ru)
     }

@@ -136,9 +136,9 @@ impl MeanVarX8 {
         }
     }
 
-    /// Accumulator i.
+    /// Accumulator i (0 ≤ i < 8; larger i wrap).
     pub fn lane(&self, i: usize) -> &MeanVar {
-        &self.lanes[i]
+        crate::lane::lane_ref(&self.lanes, i)
     }
 
     /// All eight merged, lane 0 first.

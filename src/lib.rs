@@ -62,6 +62,20 @@
 #![no_std]
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
+// No panic paths in the library: no unwrap or expect, no explicit panic, no indexing that the
+// compiler cannot prove in bounds, and no integer division without a comment that shows its
+// divisor is not 0. Constant tables built at compile time and the std-only `verify` layer are
+// the allowed exceptions, each marked where it is.
+#![cfg_attr(
+    not(test),
+    deny(
+        clippy::unwrap_used,
+        clippy::expect_used,
+        clippy::panic,
+        clippy::indexing_slicing,
+        clippy::integer_division
+    )
+)]
 
 #[cfg(feature = "std")]
 extern crate std;
@@ -83,7 +97,15 @@ pub mod seq;
 pub mod warp;
 pub mod x8;
 
+// The test layer: std, and free to index and to panic (its failures are test failures).
 #[cfg(feature = "std")]
+#[allow(
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic,
+    clippy::indexing_slicing,
+    clippy::integer_division
+)]
 pub mod verify;
 
 /// The README's examples run as doctests, so they stay true.

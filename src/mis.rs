@@ -48,7 +48,7 @@
 //! unbiased form. [`Reservoir`] is resampled importance sampling's weighted reservoir (Talbot et
 //! al. 2005), driven by one u. Their packet forms keep one accumulator or reservoir per lane.
 
-use crate::lane::{F32x8, F64x4, Lane, Lane32, U32Lane, U32x8};
+use crate::lane::{F32x8, F64x4, Lane, Lane32, U32Lane, U32x8, lane_ref, zip_map};
 use crate::warp::ONE_MINUS_EPS;
 
 /// The packet forms, on [`F32x8`]: the same generic functions.
@@ -130,35 +130,35 @@ pub fn cutoff<L: Lane>(n_f: L, pdf_f: L, n_g: L, pdf_g: L, alpha: L) -> L {
 #[inline(always)]
 fn weights_n<L: Lane, const N: usize>(n: [L; N], pdf: [L; N], h: impl Fn(L) -> L) -> [L; N] {
     let inf = L::c(f64::INFINITY);
-    let valid: [L::Mask; N] = core::array::from_fn(|k| n[k].gt(L::ZERO) & pdf[k].gt(L::ZERO));
-    let is_inf: [L::Mask; N] = core::array::from_fn(|k| valid[k] & (pdf[k].eq(inf) | n[k].eq(inf)));
+    let valid: [L::Mask; N] = zip_map(n, pdf, |n, p| n.gt(L::ZERO) & p.gt(L::ZERO));
+    let is_inf: [L::Mask; N] = zip_map(
+        valid,
+        zip_map(n, pdf, |n, p| p.eq(inf) | n.eq(inf)),
+        |v, i| v & i,
+    );
     let keep = |m: L::Mask, x: L| L::select(m, x, L::ZERO);
 
     let mut max_pdf = L::ZERO;
     let mut nan = L::ZERO.gt(L::ZERO);
     let mut infinite = L::ZERO;
-    for k in 0..N {
-        max_pdf = keep(valid[k] & !is_inf[k], pdf[k]).max(max_pdf);
-        nan = nan | n[k].is_nan() | pdf[k].is_nan();
-        infinite = infinite + keep(is_inf[k], L::ONE);
+    for (((&v, &i), &nk), &pk) in valid.iter().zip(&is_inf).zip(&n).zip(&pdf) {
+        max_pdf = keep(v & !i, pk).max(max_pdf);
+        nan = nan | nk.is_nan() | pk.is_nan();
+        infinite = infinite + keep(i, L::ONE);
     }
-    let a: [L; N] = core::array::from_fn(|k| keep(valid[k], n[k] * (pdf[k] / max_pdf)));
+    let a: [L; N] = zip_map(valid, zip_map(n, pdf, |n, p| n * (p / max_pdf)), keep);
     let mut max_a = L::ZERO;
     for &x in &a {
         max_a = x.max(max_a);
     }
-    let t: [L; N] = core::array::from_fn(|k| keep(valid[k], h(a[k] / max_a)));
+    let t: [L; N] = zip_map(valid, a, |v, x| keep(v, h(x / max_a)));
     let mut sum = L::ZERO;
     for &x in &t {
         sum = sum + x;
     }
-    core::array::from_fn(|k| {
-        let w = L::select(
-            infinite.gt(L::ZERO),
-            keep(is_inf[k], L::ONE) / infinite,
-            t[k] / sum,
-        );
-        L::select(nan | !valid[k], L::ZERO, w)
+    zip_map(zip_map(valid, is_inf, |v, i| (v, i)), t, |(v, i), tk| {
+        let w = L::select(infinite.gt(L::ZERO), keep(i, L::ONE) / infinite, tk / sum);
+        L::select(nan | !v, L::ZERO, w)
     })
 }
 
@@ -201,14 +201,12 @@ pub struct Choice<L: Lane32> {
 pub fn one_sample<L: Lane32, const N: usize>(c: [L; N], u: L) -> Choice<L> {
     // Only positive finite probabilities count; dividing by the largest keeps their sum finite.
     let inf = L::c(f64::INFINITY);
-    let c: [L; N] =
-        core::array::from_fn(|k| L::select(c[k].gt(L::ZERO) & c[k].lt(inf), c[k], L::ZERO));
+    let c: [L; N] = c.map(|x| L::select(x.gt(L::ZERO) & x.lt(inf), x, L::ZERO));
     let mut largest = L::ZERO;
     for &x in &c {
         largest = x.max(largest);
     }
-    let c: [L; N] =
-        core::array::from_fn(|k| c[k] / L::select(largest.gt(L::ZERO), largest, L::ONE));
+    let c: [L; N] = c.map(|x| x / L::select(largest.gt(L::ZERO), largest, L::ONE));
     let mut total = L::ZERO;
     for &x in &c {
         total = total + x;
@@ -511,15 +509,19 @@ impl OptimalMisX8 {
     pub fn push(&mut self, f: F32x8, pdf1: F32x8, pdf2: F32x8) {
         self.samples += 1;
         let (f, p1, p2) = (widen(f), widen(pdf1), widen(pdf2));
-        for (k, half) in self.halves.iter_mut().enumerate() {
-            half.push(self.counts, f[k], p1[k], p2[k]);
+        for (((half, f), p1), p2) in self.halves.iter_mut().zip(f).zip(p1).zip(p2) {
+            half.push(self.counts, f, p1, p2);
         }
     }
 
     /// Accumulator i (0 ≤ i < 8; larger i wrap).
     pub fn lane(&self, i: usize) -> OptimalMis {
-        let (h, j) = (&self.halves[(i >> 2) & 1], i & 3);
-        let at = |w: F64x4| w.to_array()[j];
+        let [lo, hi] = &self.halves;
+        let (h, j) = (if i & 4 == 0 { lo } else { hi }, i & 3);
+        let at = |w: F64x4| {
+            let [x0, x1, x2, x3] = w.to_array();
+            [x0, x1, x2, x3].get(j).copied().unwrap_or(x0)
+        };
         OptimalMis {
             counts: self.counts,
             samples: self.samples,
@@ -647,8 +649,8 @@ impl ReservoirX8 {
     #[inline]
     pub fn push(&mut self, index: u32, target: F32x8, pdf: F32x8) {
         let (t, p) = (target.to_array(), pdf.to_array());
-        for (i, r) in self.lanes.iter_mut().enumerate() {
-            r.push(index, f64::from(t[i]), f64::from(p[i]));
+        for ((r, t), p) in self.lanes.iter_mut().zip(t).zip(p) {
+            r.push(index, f64::from(t), f64::from(p));
         }
     }
 
@@ -661,8 +663,8 @@ impl ReservoirX8 {
         )
     }
 
-    /// Lane i's reservoir.
+    /// Lane i's reservoir (0 ≤ i < 8; larger i wrap).
     pub fn lane(&self, i: usize) -> &Reservoir<u32> {
-        &self.lanes[i]
+        lane_ref(&self.lanes, i)
     }
 }

@@ -97,8 +97,7 @@ pub fn polygon_irradiance(normal: V3, vertices: &[V3]) -> f64 {
     // to the next entry point. The first entry pairs with the last exit.
     let mut first_entry: Option<V3> = None;
     let mut exit: Option<V3> = None;
-    for i in 0..count {
-        let (a, b) = (vertices[i], vertices[(i + 1) % count]);
+    for (&a, &b) in vertices.iter().zip(vertices.iter().cycle().skip(1)) {
         let (above_a, above_b) = (dot(n, a) >= 0.0, dot(n, b) >= 0.0);
         match (above_a, above_b) {
             (true, true) => sum += term(a, b),

@@ -6,7 +6,7 @@
 use glam::{Vec2, Vec3};
 
 pub use crate::lane::{F32x8, U32x8};
-use crate::lane::{V2, V3};
+use crate::lane::{V2, V3, lane_of, zip_map};
 /// Eight 2D vectors, one per lane.
 pub type Vec2x8 = V2<F32x8>;
 /// Eight 3D vectors, one per lane.
@@ -21,13 +21,15 @@ impl Vec2x8 {
     /// The eight lanes as glam vectors.
     #[inline]
     pub fn to_array(self) -> [Vec2; 8] {
-        let (x, y) = (self.x.to_array(), self.y.to_array());
-        core::array::from_fn(|i| Vec2::new(x[i], y[i]))
+        zip_map(self.x.to_array(), self.y.to_array(), Vec2::new)
     }
-    /// Lane `i` as a glam vector. Panics if `i >= 8`.
+    /// Lane `i` as a glam vector (0 ≤ i < 8; larger i wrap).
     #[inline]
     pub fn lane(self, i: usize) -> Vec2 {
-        Vec2::new(self.x.to_array()[i], self.y.to_array()[i])
+        Vec2::new(
+            lane_of(&self.x.to_array(), i),
+            lane_of(&self.y.to_array(), i),
+        )
     }
 }
 
@@ -47,17 +49,14 @@ impl Vec3x8 {
     /// The eight lanes as glam vectors.
     #[inline]
     pub fn to_array(self) -> [Vec3; 8] {
-        let (x, y, z) = (self.x.to_array(), self.y.to_array(), self.z.to_array());
-        core::array::from_fn(|i| Vec3::new(x[i], y[i], z[i]))
+        let xy = zip_map(self.x.to_array(), self.y.to_array(), |x, y| (x, y));
+        zip_map(xy, self.z.to_array(), |(x, y), z| Vec3::new(x, y, z))
     }
-    /// Lane `i` as a glam vector. Panics if `i >= 8`.
+    /// Lane `i` as a glam vector (0 ≤ i < 8; larger i wrap).
     #[inline]
     pub fn lane(self, i: usize) -> Vec3 {
-        Vec3::new(
-            self.x.to_array()[i],
-            self.y.to_array()[i],
-            self.z.to_array()[i],
-        )
+        let at = |v: F32x8| lane_of(&v.to_array(), i);
+        Vec3::new(at(self.x), at(self.y), at(self.z))
     }
 }
 

@@ -12,6 +12,10 @@
 //! - lane i of every packet result equals the scalar result on lane i's input, bit for bit.
 //!
 //! The number of cases run is printed and asserted, so a shrinking sweep fails.
+//!
+//! The sweep runs optimised (opt-level 3) with overflow checks on, from Cargo.toml's test
+//! profile, so an integer overflow in the library on these inputs panics here instead of
+//! wrapping; `overflow_checks_are_on` fails if that profile loses them.
 
 use glam::{Vec2, Vec3};
 use mcsample::frame::{self, Frame};
@@ -330,4 +334,16 @@ fn subnormal_cones_keep_the_pdf_of_their_own_samples() {
         let w = mcsample::warp::uniform_cone(Vec2::new(0.5, 0.5), h);
         assert_eq!(mcsample::warp::uniform_cone_pdf(w, h), 0.0, "h = {h:e}");
     }
+}
+
+/// The test profile's overflow checks are what make the sweep find integer overflows in the
+/// optimised library: an overflowing add must panic in this build.
+#[test]
+fn overflow_checks_are_on() {
+    let x = std::hint::black_box(u32::MAX);
+    let overflowed = std::panic::catch_unwind(|| std::hint::black_box(x) + 1);
+    assert!(
+        overflowed.is_err(),
+        "u32::MAX + 1 did not panic: overflow checks are off"
+    );
 }

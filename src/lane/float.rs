@@ -15,7 +15,9 @@ pub type F32x8 = wide::f32x8;
 pub type F64x4 = wide::f64x4;
 
 /// A lane-wise boolean: `bool` for scalar lanes, an all-ones/all-zeros bit pattern for packets.
-pub trait Mask: Copy + BitAnd<Output = Self> + BitOr<Output = Self> + Not<Output = Self> {
+pub trait Mask:
+    Copy + Default + BitAnd<Output = Self> + BitOr<Output = Self> + Not<Output = Self>
+{
     /// True if any lane is set.
     fn any(self) -> bool;
     /// True if every lane is set.
@@ -49,6 +51,7 @@ impl Mask for F64x4 {
 /// bit for bit.
 pub trait Lane:
     Copy
+    + Default
     + Debug
     + Add<Output = Self>
     + Sub<Output = Self>

@@ -96,7 +96,12 @@ impl U32Lane for u32 {
         fn wrapping_add(self, b: Self) -> Self { u32::wrapping_add(self, b) }
         fn wrapping_sub(self, b: Self) -> Self { u32::wrapping_sub(self, b) }
         fn wrapping_mul(self, b: Self) -> Self { u32::wrapping_mul(self, b) }
-        fn div_rem(self, d: u32) -> (Self, Self) { (self / d, self % d) }
+        fn div_rem(self, d: u32) -> (Self, Self) {
+            // Total: a divisor of 0 is taken as 1 (callers pass counts clamped to at least 1).
+            let d = d.max(1);
+            #[allow(clippy::integer_division)]
+            (self / d, self % d)
+        }
         fn splat_from(repeated: &[u32; 8]) -> Self { repeated[0] }
         fn mul_hi(self, b: Self) -> Self { ((self as u64 * b as u64) >> 32) as u32 }
         fn gt_mask(self, b: Self) -> Self { 0u32.wrapping_sub((self > b) as u32) }
@@ -148,6 +153,9 @@ impl U32Lane for U32x8 {
 #[inline(always)]
 fn reverse_bits_x8(x: U32x8) -> U32x8 {
     use wide::u8x32;
+    // Evaluated into a constant: an index out of range is a compile error, not a run-time panic,
+    // and the divisor is the constant 4.
+    #[allow(clippy::indexing_slicing, clippy::integer_division)]
     const fn tables() -> ([u8; 32], [u8; 32], [u8; 32]) {
         let (mut bytes, mut low, mut high) = ([0u8; 32], [0u8; 32], [0u8; 32]);
         let mut i = 0;
@@ -200,10 +208,13 @@ struct Divisor {
 }
 
 impl Divisor {
-    /// The divisor `d`, which must be ≥ 1.
+    /// The divisor `d` (0 is taken as 1: callers pass counts clamped to at least 1).
     #[inline(always)]
     fn new(d: u32) -> Self {
+        let d = d.max(1);
         let l = 32 - (d - 1).leading_zeros(); // ⌈log₂ d⌉
+        // d ≥ 1, just above.
+        #[allow(clippy::integer_division)]
         let m = ((((1u64 << l) - d as u64) << 32) / d as u64 + 1) as u32;
         Self {
             d,

@@ -47,3 +47,32 @@ pub(crate) use float::sqrt_f64;
 pub use float::{F32x8, F64x4, Lane, Mask};
 pub use int::{Lane32, U32Lane, U32x8};
 pub use vector::{V2, V3};
+
+/// `[f(a₀, b₀), f(a₁, b₁), …]`: the element-wise map of two arrays of one length, without
+/// indexing (so without a bounds check to prove or a panic path to leave behind).
+#[inline(always)]
+pub(crate) fn zip_map<A, B, C: Copy + Default, const N: usize>(
+    a: [A; N],
+    b: [B; N],
+    mut f: impl FnMut(A, B) -> C,
+) -> [C; N] {
+    let mut out = [C::default(); N];
+    for ((o, x), y) in out.iter_mut().zip(a).zip(b) {
+        *o = f(x, y);
+    }
+    out
+}
+
+/// Element `i mod 8` of an eight-element array: the lane index of a packet, which callers
+/// form as `0..8`; reduced rather than checked, so there is no panic path.
+#[inline(always)]
+pub(crate) fn lane_of<T: Copy>(a: &[T; 8], i: usize) -> T {
+    // The fallback is unreachable (i & 7 < 8), and the compiler drops it.
+    a.get(i & 7).copied().unwrap_or(a[0])
+}
+
+/// A reference to element `i mod 8`, as [`lane_of`].
+#[inline(always)]
+pub(crate) fn lane_ref<T>(a: &[T; 8], i: usize) -> &T {
+    a.get(i & 7).unwrap_or(&a[0])
+}

@@ -440,6 +440,9 @@ pub(crate) fn fast_two_diff<L: Lane>(a: L, b: L) -> (L, L) {
 
 /// f32 coefficients written as their bit patterns, so that the polynomial evaluated is exactly
 /// the one whose error was measured: a decimal literal would be rounded by the parser.
+// Evaluated into constants only: an index out of range there is a compile error, not a
+// run-time panic, and the loop bounds keep every index in range.
+#[allow(clippy::indexing_slicing)]
 pub(crate) const fn bits<const N: usize>(b: [u32; N]) -> [f32; N] {
     let mut out = [0.0; N];
     let mut i = 0;
@@ -455,11 +458,13 @@ pub(crate) const fn bits<const N: usize>(b: [u32; N]) -> [f32; N] {
 /// The coefficients are f32 values, so `L::c` converts them exactly.
 #[inline(always)]
 pub(crate) fn horner<L: Lane, const N: usize>(x: L, p: [f32; N]) -> L {
-    let mut acc = L::c(p[N - 1] as f64);
-    let mut i = N - 1;
-    while i > 0 {
-        i -= 1;
-        acc = acc.mul_add(x, L::c(p[i] as f64));
+    let mut coefficients = p.iter().rev();
+    let Some(&last) = coefficients.next() else {
+        return L::ZERO;
+    };
+    let mut acc = L::c(last as f64);
+    for &c in coefficients {
+        acc = acc.mul_add(x, L::c(c as f64));
     }
     acc
 }

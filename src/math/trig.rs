@@ -48,6 +48,9 @@ const COS_T: [f32; 4] = bits([0xbe9d_e9e6, 0x3c81_e0d8, 0xb9aa_d95b, 0x366a_7bf7
 
 /// The same polynomials in v = t/2 (quarter turns): the coefficient of v^k is scaled by 2^k,
 /// exactly, so the results are those of the t-kernel at t = 2v, bit for bit.
+// Evaluated into constants only: an index out of range there is a compile error, not a
+// run-time panic, and the loop bounds keep every index in range.
+#[allow(clippy::indexing_slicing)]
 const fn scale_pow2<const N: usize>(p: [f32; N], first: f32, step: f32) -> [f32; N] {
     let mut out = p;
     let mut s = first;

@@ -2,7 +2,7 @@
 //! state is a low and a high [`U32x8`] word.
 
 use super::MULTIPLIER;
-use crate::lane::U32x8;
+use crate::lane::{U32x8, zip_map};
 
 const MUL_LO: u32 = MULTIPLIER as u32;
 const MUL_HI: u32 = (MULTIPLIER >> 32) as u32;
@@ -24,7 +24,7 @@ impl Words {
 
     pub(super) fn get(&self) -> [u64; 8] {
         let (lo, hi) = (self.lo.to_array(), self.hi.to_array());
-        core::array::from_fn(|i| (u64::from(hi[i]) << 32) | u64::from(lo[i]))
+        zip_map(hi, lo, |h, l| (u64::from(h) << 32) | u64::from(l))
     }
 }
 

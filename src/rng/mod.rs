@@ -46,7 +46,7 @@
 use rand_pcg::Pcg32;
 use wide::{bytemuck, i32x8};
 
-use crate::lane::{F32x8, U32x8};
+use crate::lane::{F32x8, U32x8, lane_of, zip_map};
 
 #[cfg(not(all(target_arch = "x86_64", not(target_feature = "avx2"))))]
 #[path = "lanes32.rs"]
@@ -107,11 +107,10 @@ impl Pcg32x8 {
     /// Any values are allowed, including equal streams in different lanes.
     pub fn new(states: [u64; 8], streams: [u64; 8]) -> Self {
         let incs = streams.map(|s| (s << 1) | 1);
-        let states = core::array::from_fn(|i| {
-            states[i]
-                .wrapping_add(incs[i])
+        let states = zip_map(states, incs, |s, inc| {
+            s.wrapping_add(inc)
                 .wrapping_mul(MULTIPLIER)
-                .wrapping_add(incs[i])
+                .wrapping_add(inc)
         });
         Self::from_raw(states, incs)
     }
@@ -127,10 +126,10 @@ impl Pcg32x8 {
 
     /// Lane `i` as a scalar `rand_pcg::Pcg32` at the same position: its `next_u32` (from
     /// `rand_core::Rng`) returns what lane `i` of the next [`next_u32x8`](Self::next_u32x8)
-    /// would. A copy: stepping it does not step the packet. Panics if `i >= 8`.
+    /// would. A copy: stepping it does not step the packet. Larger `i` wrap (`i mod 8`).
     pub fn lane(&self, i: usize) -> Pcg32 {
         let (states, incs) = self.raw();
-        Pcg32::from_state(states[i], incs[i] >> 1)
+        Pcg32::from_state(lane_of(&states, i), lane_of(&incs, i) >> 1)
     }
 
     /// The next 32-bit output of every lane, then one step of every lane.
@@ -159,9 +158,8 @@ impl Pcg32x8 {
     pub fn advance(&mut self, delta: u64) {
         let (mult, plus) = lcg_jump(delta);
         let (states, incs) = self.raw();
-        let states = core::array::from_fn(|i| {
-            mult.wrapping_mul(states[i])
-                .wrapping_add(plus.wrapping_mul(incs[i]))
+        let states = zip_map(states, incs, |s, inc| {
+            mult.wrapping_mul(s).wrapping_add(plus.wrapping_mul(inc))
         });
         *self = Self::from_raw(states, incs);
     }

@@ -24,9 +24,8 @@ pub(super) struct Words([m128i; 4]);
 
 impl Words {
     pub(super) fn new(x: [u64; 8]) -> Self {
-        Self(core::array::from_fn(|j| {
-            bytemuck::cast([x[2 * j], x[2 * j + 1]])
-        }))
+        let [x0, x1, x2, x3, x4, x5, x6, x7] = x;
+        Self([[x0, x1], [x2, x3], [x4, x5], [x6, x7]].map(bytemuck::cast))
     }
 
     pub(super) fn get(&self) -> [u64; 8] {
@@ -67,7 +66,14 @@ fn next_pair(s: &mut m128i, inc: m128i) -> m128i {
 /// The output of every lane's state, then one step of it.
 #[inline(always)]
 pub(super) fn next(state: &mut Words, inc: &Words) -> U32x8 {
-    let out: [m128i; 4] = core::array::from_fn(|j| next_pair(&mut state.0[j], inc.0[j]));
+    let [s0, s1, s2, s3] = &mut state.0;
+    let [i0, i1, i2, i3] = inc.0;
+    let out = [
+        next_pair(s0, i0),
+        next_pair(s1, i1),
+        next_pair(s2, i2),
+        next_pair(s3, i3),
+    ];
     // The low dwords (0 and 2) of two registers make four lanes.
     let low_dwords = |a: m128i, b: m128i| {
         cast_to_m128i_from_m128(shuffle_abi_f32_all_m128::<0b10_00_10_00>(

@@ -221,7 +221,7 @@ impl<'a> PowerTable<'a> {
             let p = l.power() as f64;
             if p > 0.0 && p.is_finite() { p } else { 0.0 }
         };
-        let total: f64 = lights[..n].iter().map(power).sum();
+        let total: f64 = lights.iter().take(n).map(power).sum();
         if total > 0.0 && total.is_finite() {
             let mut sum = 0.0f64;
             for (c, l) in cdf.iter_mut().zip(lights) {

@@ -27,7 +27,7 @@ pub fn l2_star_discrepancy(points: &[Vec2]) -> f64 {
         // Diagonal term once, off-diagonal terms twice (the double sum is symmetric).
         pairs += (1.0 - xi) * (1.0 - yi);
         let mut off = 0.0;
-        for q in &points[i + 1..] {
+        for q in points.iter().skip(i + 1) {
             let (xj, yj) = (q.x as f64, q.y as f64);
             off += (1.0 - xi.max(xj)) * (1.0 - yi.max(yj));
         }
@@ -96,8 +96,12 @@ pub fn net_violation(points: &[Vec2], m: u32) -> Option<NetViolation> {
             let cx = (p.x as f64 * (1u64 << x_bits) as f64) as u32;
             let cy = (p.y as f64 * (1u64 << y_bits) as f64) as u32;
             let cell = ((cx << y_bits) | cy) as usize;
-            let (word, bit) = (cell / 64, 1u64 << (cell % 64));
-            if seen[word] & bit != 0 {
+            let (word, bit) = (cell >> 6, 1u64 << (cell & 63));
+            // cell < 2^MAX_NET_M (checked above), so the word exists.
+            let Some(seen) = seen.get_mut(word) else {
+                return Some(NetViolation::OutOfRange { index });
+            };
+            if *seen & bit != 0 {
                 return Some(NetViolation::Collision {
                     x_bits,
                     y_bits,
@@ -106,7 +110,7 @@ pub fn net_violation(points: &[Vec2], m: u32) -> Option<NetViolation> {
                     index,
                 });
             }
-            seen[word] |= bit;
+            *seen |= bit;
         }
     }
     None

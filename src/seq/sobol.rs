@@ -32,6 +32,9 @@ const JOE_KUO: [(u32, u32, [u32; 3]); 3] =
 
 /// The 32 direction numbers vₖ = mₖ·2³²⁻ᵏ of a Joe–Kuo dimension, from the recurrence
 /// mₖ = 2ˢ·mₖ₋ₛ ⊕ mₖ₋ₛ ⊕ (⊕ᵢ₌₁..ₛ₋₁ 2ⁱ·aᵢ·mₖ₋ᵢ), aᵢ the i-th bit of a from the top of its s − 1 bits.
+// Evaluated into constants only: an index out of range there is a compile error, not a
+// run-time panic, and the loop bounds keep every index in range.
+#[allow(clippy::indexing_slicing)]
 const fn direction_numbers(s: u32, a: u32, init: [u32; 3]) -> [u32; 32] {
     let mut m = [0u32; 33]; // m[k] for k = 1..=32
     let mut k = 1;
@@ -65,6 +68,9 @@ const fn direction_numbers(s: u32, a: u32, init: [u32; 3]) -> [u32; 32] {
 /// which the loop reads as bit 31 − p of the bit-reversed index, walking it from the top. Each
 /// column is repeated 8 times so that a packet reads it as one memory operand. Dimension 1 needs
 /// no table (see [`pascal`]).
+// Evaluated into constants only: an index out of range there is a compile error, not a
+// run-time panic, and the loop bounds keep every index in range.
+#[allow(clippy::indexing_slicing)]
 static COLUMNS: [[[u32; 8]; 32]; 2] = {
     let mut out = [[[0u32; 8]; 32]; 2];
     let mut d = 0;
@@ -114,7 +120,7 @@ fn pascal<U: U32Lane>(index: U) -> U {
 /// The seeds of a dimension: (index shuffle of its set, value scramble of the dimension).
 #[inline(always)]
 fn seeds(dim: u32, seed: u32) -> (u32, u32) {
-    let set_seed = lowbias32(lowbias32(seed ^ 0x5851_f42d) ^ (dim / 4));
+    let set_seed = lowbias32(lowbias32(seed ^ 0x5851_f42d) ^ (dim >> 2));
     let index_seed = lowbias32(set_seed ^ 0x0bad_5eed);
     let value_seed = lowbias32(set_seed.wrapping_add(dim % 4 + 1));
     (index_seed, value_seed)
@@ -131,7 +137,8 @@ pub(crate) fn sobol_bits<U: U32Lane>(index: U, dim: u32, seed: u32) -> U {
         0 => reversed_index.reverse_bits(),
         1 => pascal(reversed_index.reverse_bits()),
         d => {
-            let columns = &COLUMNS[d as usize - 2];
+            let [columns2, columns3] = &COLUMNS;
+            let columns = if d == 2 { columns2 } else { columns3 };
             let mut bits = reversed_index;
             let mut value = U::splat(0);
             for column in columns {

@@ -42,7 +42,7 @@ fn ceil_log2(n: u32) -> u32 {
 pub(crate) fn permute<U: U32Lane>(i: U, n: u32, key: U) -> U {
     let bits = ceil_log2(n);
     let w = U::splat(((1u64 << bits) - 1) as u32);
-    let half = (bits / 2).max(1);
+    let half = (bits >> 1).max(1);
     // Round keys whose low bits depend on all of `key`: the low k bits of a product depend only on
     // the low k bits of its factors, so the high bits are folded down first.
     let k1 = key;
@@ -117,6 +117,8 @@ pub fn stratified<I: U32Lane>(index: I, count: u32, dim: u32, seed: u32) -> I::F
 #[inline(always)]
 fn grid(nx: u32, ny: u32) -> (u32, u32) {
     let nx = nx.clamp(1, MAX_STRATA);
+    // nx ≥ 1, clamped just above.
+    #[allow(clippy::integer_division)]
     (nx, ny.clamp(1, MAX_STRATA / nx))
 }
 

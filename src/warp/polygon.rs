@@ -92,11 +92,9 @@ impl<L: Math, const N: usize> EdgePlanes<L, N> {
     #[inline(always)]
     pub(crate) fn contains(&self, w: V3<L>) -> L::Mask {
         let slack = self.slack;
-        let mut inside = w.dot(self.m[0]).ge(slack);
-        let mut i = 1;
-        while i < N {
-            inside = inside & w.dot(self.m[i]).ge(slack);
-            i += 1;
+        let mut inside = L::ZERO.le(L::ZERO);
+        for m in &self.m {
+            inside = inside & w.dot(*m).ge(slack);
         }
         inside
     }

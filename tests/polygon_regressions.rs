@@ -211,3 +211,34 @@ fn skewed_parallelograms_are_sampled_by_area() {
     let ey = Vec3::new(168.60199, -189796.0, 0.0) * (0.0028 / 189796.08);
     assert!(!SphericalRectangle::new(c, ex, ey).by_area());
 }
+
+/// Two findings of the `warps` and `lights` fuzz targets outside the polygons, pinned here with
+/// the others: `cosine_hemisphere_pdf` of a cosine above 1 (a vector that is not unit, here +∞)
+/// was +∞, and is the pdf at cos θ = 1; and a signalling NaN in a light's radiance came out
+/// quieted in one width and not the other, and now comes out as the canonical quiet NaN in both.
+#[test]
+fn cosine_pdf_above_one_and_nan_radiance() {
+    use mcsample::scene::{Light, SphereLight};
+    use mcsample::warp::cosine_hemisphere_pdf;
+    use mcsample::x8::F32x8;
+    let at_one = cosine_hemisphere_pdf(1.0f32);
+    assert_eq!(at_one, core::f32::consts::FRAC_1_PI);
+    for c in [1.5f32, f32::INFINITY] {
+        assert_eq!(cosine_hemisphere_pdf(c), at_one, "cos θ = {c}");
+        assert_eq!(
+            cosine_hemisphere_pdf(F32x8::splat(c)).to_array(),
+            [at_one; 8]
+        );
+    }
+
+    let signalling = f32::from_bits(0x7fb1_ffff);
+    let le = Vec3::new(signalling, 1.0, 2.0);
+    let light = Light::Sphere(SphereLight::new(Vec3::new(0.0, 0.0, 3.0), 1.0, le));
+    let s = light.sample(Vec3::ZERO, Vec2::splat(0.4));
+    let s8 = light
+        .splat::<Vec3x8>()
+        .sample(Vec3x8::splat(Vec3::ZERO), Vec2x8::splat(Vec2::splat(0.4)));
+    assert!(s.pdf > 0.0);
+    assert_eq!(s.le.x.to_bits(), 0x7fc0_0000, "scalar Le");
+    assert_eq!(s8.le.lane(0).x.to_bits(), 0x7fc0_0000, "packet Le");
+}

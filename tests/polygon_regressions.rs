@@ -242,3 +242,60 @@ fn cosine_pdf_above_one_and_nan_radiance() {
     assert_eq!(s.le.x.to_bits(), 0x7fc0_0000, "scalar Le");
     assert_eq!(s8.le.lane(0).x.to_bits(), 0x7fc0_0000, "packet Le");
 }
+
+/// The last three findings of the `spherical` target. A sliver of 2.6e-10 sr seen nearly
+/// edge-on: its by-area inverse formed w·n and a·n in f32, which cancel, and was NaN. A triangle
+/// with one vertex 2⁻⁷⁰ as far as the others: its by-area sample was normalised from subnormal
+/// squares and came out 4e-5 short of unit length.
+#[test]
+fn by_area_inverse_and_sample_of_extreme_triangles() {
+    let sliver = SphericalTriangle::new(
+        Vec3::new(-1.3240568e-6, -0.005714023, -0.0004882978),
+        Vec3::new(2045.6874, 4.408357e-39, 2141632.0),
+        Vec3::new(2045.6854, 3.160767, 2141630.0),
+    );
+    assert!(sliver.by_area());
+    for u in [Vec2::ZERO, Vec2::new(0.3, 0.3), Vec2::new(0.9, 0.2)] {
+        let (w, pdf) = sliver.sample(u);
+        let back = sliver.inverse(w);
+        assert!(pdf > 0.0, "u {u}: pdf {pdf}");
+        assert!(
+            back.is_finite() && back.cmpge(Vec2::ZERO).all() && back.cmple(Vec2::ONE).all(),
+            "u {u}: inverse {back} of {w}"
+        );
+    }
+    let near_vertex = SphericalTriangle::new(
+        Vec3::new(-25443.238, 9.741603e-33, 4194242.5),
+        Vec3::new(-1.4417301e-15, 5705939.0, -21164.645),
+        Vec3::new(6.822566e-39, -7.138314e-17, -7.1402575e-17),
+    );
+    let (w, pdf) = near_vertex.sample(Vec2::ZERO);
+    assert!(
+        pdf > 0.0 && (w.length() - 1.0).abs() < 1e-6,
+        "w {w}, |w| {}",
+        w.length()
+    );
+}
+
+/// A shading point on a rectangle's own corner (3.5e-38 from its plane), described from the
+/// far corner 32 away: the f64 plane offset from there is ~1e-15 of rounding, and the light got
+/// Ω = π. It is edge-on (Ω 0) from both corners. And the inverse's reach: a rectangle 2e8 times
+/// larger than its distance has a NaN spherical inverse, documented, where 2e5 has a finite one.
+#[test]
+fn point_on_a_corner_and_the_inverse_reach() {
+    let c = Vec3::new(9.403953e-38, -1.07666766e-23, 3.508151e-38);
+    let ex = Vec3::new(0.0, 32.000977, 1.891708e-39);
+    let ey = Vec3::new(1.8626451e-9, 0.0, 0.0);
+    for (corner, e1, e2) in [(c, ex, ey), (c + ex, ey, -ex)] {
+        let omega = SphericalRectangle::new(corner, e1, e2).solid_angle();
+        assert_eq!(omega, 0.0, "from {corner}: Ω {omega}");
+    }
+    for (d, finite) in [(1e-5f32, true), (1e-8, false)] {
+        let r = SphericalRectangle::new(Vec3::new(-0.5, -0.5, d), Vec3::X, Vec3::Y);
+        assert!(!r.by_area());
+        let p = Vec3::new(-0.2, 0.1, d);
+        let back = r.inverse(p);
+        assert_eq!(back.is_finite(), finite, "d {d}: inverse {back}");
+        assert!(finite || back.is_nan());
+    }
+}

@@ -65,6 +65,15 @@ impl<L: Lane> V2<L> {
             L::select(m | self.y.is_nan(), nan, self.y),
         )
     }
+    /// Every component the canonical NaN where `m` is set; for warps whose outputs are NaN only
+    /// where an input is, so that `m` (the inputs' NaN) is the whole story. One mask for every
+    /// component lets the blend share its constant: two instructions a component in SSE2, where
+    /// [`V2::nan_where`] takes five.
+    #[inline(always)]
+    pub fn nan_if(self, m: L::Mask) -> Self {
+        let nan = L::c(f64::NAN);
+        Self::new(L::select(m, nan, self.x), L::select(m, nan, self.y))
+    }
 }
 
 impl<L: Lane> V3<L> {
@@ -152,6 +161,16 @@ impl<L: Lane> V3<L> {
             L::select(m | self.x.is_nan(), nan, self.x),
             L::select(m | self.y.is_nan(), nan, self.y),
             L::select(m | self.z.is_nan(), nan, self.z),
+        )
+    }
+    /// Every component the canonical NaN where `m` is set (see [`V2::nan_if`]).
+    #[inline(always)]
+    pub fn nan_if(self, m: L::Mask) -> Self {
+        let nan = L::c(f64::NAN);
+        Self::new(
+            L::select(m, nan, self.x),
+            L::select(m, nan, self.y),
+            L::select(m, nan, self.z),
         )
     }
 }

@@ -43,7 +43,7 @@ pub fn uniform_cone<P: Point2<Lane = L>, L: Math>(u: P, h: L) -> P::Vec3 {
     let sin_theta = sin_from_one_minus_cos(t);
     let (s, c) = u.y.sincos_2pi_unit();
     let w = V3::new(sin_theta * c, sin_theta * s, L::ONE - t);
-    Point3::from_lanes(w.nan_where(u.any_nan() | h.is_nan()))
+    Point3::from_lanes(w.nan_if(u.any_nan() | h.is_nan()))
 }
 
 /// pdf per steradian of [`uniform_cone`] at direction `w`: 1/(2πh) inside the cone, 0 outside,

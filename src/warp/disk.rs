@@ -9,8 +9,14 @@ use crate::warp::common::{azimuth_fraction, clamp_u};
 /// The concentric map, also returning 1 − r for the radius r of the point.
 ///
 /// Mapping: a = 2u₀ − 1, b = 2u₁ − 1. The larger of |a|, |b| is the radius r; the ratio of the
-/// other to it, t ∈ [−1, 1], is the angle in units of π/4 within that quadrant's wedge. One
-/// division and selects replace the four-way branch.
+/// other to it, t ∈ [−1, 1], is the angle in units of π/4 within that quadrant's wedge.
+///
+/// Written in the first octant: r = max(|a|, |b|) and |t| = min(|a|, |b|)/r, and the signs of a
+/// and b go back on at the end (x has a's, y has b's, in every wedge). This is the textbook
+/// map's arithmetic, bit for bit, since sin is odd and cos even in |t|; but where the textbook
+/// picks r and the other coordinate with a select on the wedge, which LLVM compiles to a branch
+/// taken half the time in a scalar loop, min and max pick them here, and the only select left
+/// is the sin/cos swap of the wedge |b| ≥ |a|.
 ///
 /// 1 − r comes back because the cosine hemisphere needs it exactly: z = √((1−r)(1+r)) does not
 /// cancel near the rim, where √(1 − x² − y²) loses up to 8e-5. It is computed from u, as
@@ -20,14 +26,18 @@ pub(crate) fn concentric_with_one_minus_r<L: Math>(u: V2<L>) -> (V2<L>, L) {
     let u = clamp_u(u);
     let a = u.x.mul_add(L::TWO, L::c(-1.0));
     let b = u.y.mul_add(L::TWO, L::c(-1.0));
-    let a_major = a.abs().gt(b.abs());
-    let r = L::select(a_major, a, b);
-    let other = L::select(a_major, b, a);
+    let (abs_a, abs_b) = (a.abs(), b.abs());
+    let a_major = abs_a.gt(abs_b);
+    let r = abs_a.max(abs_b);
+    let minor = abs_a.min(abs_b);
     // At the centre r = 0: t = 0 keeps the result at the origin instead of 0/0.
-    let t = L::select(r.eq(L::ZERO), L::ZERO, other / r);
+    let t = L::select(r.eq(L::ZERO), L::ZERO, minor / r);
     let (s, c) = t.sincos_pi4();
     // Wedge |a| > |b|: φ = (π/4)t. Otherwise φ = π/2 − (π/4)t, which swaps sin and cos.
-    let p = V2::new(r * L::select(a_major, c, s), r * L::select(a_major, s, c));
+    let p = V2::new(
+        r.copysign(a) * L::select(a_major, c, s),
+        r.copysign(b) * L::select(a_major, s, c),
+    );
     let u_major = L::select(a_major, u.x, u.y);
     let one_minus_r = L::TWO * u_major.min(L::ONE - u_major);
     (p, one_minus_r)
@@ -40,7 +50,7 @@ pub(crate) fn concentric_with_one_minus_r<L: Math>(u: V2<L>) -> (V2<L>, L) {
 #[inline(always)]
 pub fn concentric_disk<P: Point2>(u: P) -> P {
     let u = u.to_lanes();
-    P::from_lanes(concentric_with_one_minus_r(u).0.nan_where(u.any_nan()))
+    P::from_lanes(concentric_with_one_minus_r(u).0.nan_if(u.any_nan()))
 }
 
 /// Inverse of [`concentric_disk`]: disk point → u ∈ [0, 1]², within 3e-7 in f32.
@@ -76,7 +86,7 @@ pub fn polar_disk<P: Point2<Lane = L>, L: Math>(u: P) -> P {
     let u = clamp_u(u.to_lanes());
     let r = u.x.sqrt();
     let (s, c) = u.y.sincos_2pi_unit();
-    P::from_lanes(V2::new(r * c, r * s).nan_where(u.any_nan()))
+    P::from_lanes(V2::new(r * c, r * s).nan_if(u.any_nan()))
 }
 
 /// Inverse of [`polar_disk`]: u₀ = |p|², at most 1 (a rim point that rounding put a few ulp

@@ -17,7 +17,7 @@ pub fn uniform_hemisphere<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
     let z = u.x;
     let r = ((L::ONE - z) * (L::ONE + z)).max(L::ZERO).sqrt();
     let (s, c) = u.y.sincos_2pi_unit();
-    Point3::from_lanes(V3::new(r * c, r * s, z).nan_where(u.any_nan()))
+    Point3::from_lanes(V3::new(r * c, r * s, z).nan_if(u.any_nan()))
 }
 
 /// pdf per steradian of [`uniform_hemisphere`] at direction `w`: 1/(2π) for w.z ≥ 0, else 0
@@ -49,7 +49,7 @@ pub fn cosine_hemisphere<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
     let u = u.to_lanes();
     let (p, one_minus_r) = concentric_with_one_minus_r(u);
     let z = (one_minus_r * (L::TWO - one_minus_r)).max(L::ZERO).sqrt();
-    Point3::from_lanes(V3::new(p.x, p.y, z).nan_where(u.any_nan()))
+    Point3::from_lanes(V3::new(p.x, p.y, z).nan_if(u.any_nan()))
 }
 
 /// pdf per steradian of [`cosine_hemisphere`]: cos θ/π for cos θ > 0, else 0 (the rim, below it,

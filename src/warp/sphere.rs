@@ -16,7 +16,7 @@ pub fn uniform_sphere<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
     let z = u.x.mul_add(L::c(-2.0), L::ONE);
     let r = L::TWO * (u.x * (L::ONE - u.x)).max(L::ZERO).sqrt();
     let (s, c) = u.y.sincos_2pi_unit();
-    Point3::from_lanes(V3::new(r * c, r * s, z).nan_where(u.any_nan()))
+    Point3::from_lanes(V3::new(r * c, r * s, z).nan_if(u.any_nan()))
 }
 
 /// pdf per steradian of [`uniform_sphere`] at direction `w`: 1/(4π), and 0 for NaN in any

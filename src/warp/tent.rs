@@ -10,10 +10,11 @@ use crate::warp::common::clamp01;
 #[inline(always)]
 pub fn tent<L: Math>(u: L) -> L {
     let u = clamp01(u);
-    let left = u.lt(L::HALF);
-    let v = L::select(left, u, L::ONE - u);
+    // The distance to the nearer end: u below ½, 1 − u (exact there) above, by a min rather
+    // than a select on the half, which the sign needs anyway.
+    let v = u.min(L::ONE - u);
     let x = L::ONE - (v * L::TWO).sqrt();
-    L::select(left, -x, x).canon()
+    L::select(u.lt(L::HALF), -x, x).canon()
 }
 
 /// pdf of [`tent`]: 1 − |x| on [−1, 1], else 0 (also for NaN).

@@ -15,13 +15,14 @@ use crate::warp::common::clamp_u;
 #[inline(always)]
 pub fn uniform_triangle<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
     let u = clamp_u(u.to_lanes());
-    let first = u.x.lt(u.y);
-    let half0 = u.x * L::HALF;
-    let half1 = u.y * L::HALF;
-    let b0 = L::select(first, half0, u.x - half1);
-    let b1 = L::select(first, u.y - half0, half1);
+    // Both cases at once: with m = min(u₀, u₁)/2, b₀ = u₀ − m and b₁ = u₁ − m, since the
+    // smaller coordinate less half itself is its half exactly (Sterbenz). A min instead of a
+    // compare and two selects: five fewer instructions per point in SSE2.
+    let m = u.x.min(u.y) * L::HALF;
+    let b0 = u.x - m;
+    let b1 = u.y - m;
     let b2 = L::ONE - u.x.max(u.y);
-    Point3::from_lanes(V3::new(b0, b1, b2).nan_where(u.any_nan()))
+    Point3::from_lanes(V3::new(b0, b1, b2).nan_if(u.any_nan()))
 }
 
 /// Inverse of [`uniform_triangle`]: barycentrics → u, as (b₀ + b₁, 2b₁) if b₀ > b₁, else

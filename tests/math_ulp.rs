@@ -321,6 +321,41 @@ fn ulp_sincos_2pi() {
     check("cos_2pi", w[1], N_FULL);
 }
 
+/// The warps' `sincos_2pi_unit` skips the turn reduction and rotates by q ∈ {0, …, 4} quarter
+/// turns instead of q ∈ {−2, …, 2}; on [0, 1] it must be `sincos_2pi` bit for bit, signed zeros
+/// included (at u = ½ the sine is +0, which a rotation by d·(|d| − 2) would turn into −0). Every
+/// 61st f32 of [0, 1], every f32 within 4096 ulp of each eighth of a turn, and −0, in both
+/// widths.
+#[test]
+fn sincos_2pi_unit_is_sincos_2pi_on_the_unit_interval() {
+    let one = 1.0f32.to_bits();
+    let mut pts: Vec<f32> = (0..=one).step_by(61).map(f32::from_bits).collect();
+    for k in 0..=8u32 {
+        let b = (k as f32 / 8.0).to_bits();
+        pts.extend((b.saturating_sub(4096)..=(b + 4096).min(one)).map(f32::from_bits));
+    }
+    pts.push(-0.0);
+    let bits = |(s, c): (f32, f32)| (s.to_bits(), c.to_bits());
+    let mut bad = 0usize;
+    for chunk in pts.chunks(8) {
+        let mut xs = [0.0f32; 8];
+        xs[..chunk.len()].copy_from_slice(chunk);
+        let (s8, c8) = <F32x8 as Math>::sincos_2pi_unit(F32x8::new(xs));
+        let (s8, c8) = (s8.to_array(), c8.to_array());
+        for (i, &u) in chunk.iter().enumerate() {
+            let want = bits(<f32 as Math>::sincos_2pi(u));
+            let got = bits(<f32 as Math>::sincos_2pi_unit(u));
+            if got != want || (s8[i].to_bits(), c8[i].to_bits()) != want {
+                if bad < 5 {
+                    eprintln!("u = {u:e}: unit {got:x?}, x8 {:x?}, general {want:x?}", (s8[i].to_bits(), c8[i].to_bits()));
+                }
+                bad += 1;
+            }
+        }
+    }
+    assert_eq!(bad, 0, "{bad} of {} points differ", pts.len());
+}
+
 #[test]
 fn ulp_sincos_pi4() {
     let w = par(N_FULL, |t, n, rng| {

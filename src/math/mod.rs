@@ -89,7 +89,7 @@
 //! | function | method | ops | of which mul_add | div/sqrt |
 //! |---|---|---|---|---|
 //! | `sin_cos` | j = round(2x/π); r = x − j·π/2 with a 4-part Cody–Waite constant (three 12-bit parts and an f32 tail, so j·C₁, j·C₂, j·C₃ are exact without FMA for \|j\| < 2¹²) and Fast2Sum to round r once and keep its remainder; degree-7 sin and degree-8 cos in r; quadrant from the bits of j | ~49 | 10 | — |
-//! | `sincos_2pi` | r = u − round(u), q = round(4r), f = 4r − q (all exact); the `sincos_pi4` polynomials with coefficients scaled to quarter turns; the quadrant by an exact rotation (products with 0 and ±1), not selects; `sincos_2pi_unit` drops the reduction's sign and large-argument handling for u ∈ [0, 1] | ~38 (~33 unit) | 8 | — |
+//! | `sincos_2pi` | r = u − round(u), q = round(4r), f = 4r − q (all exact); the `sincos_pi4` polynomials with coefficients scaled to quarter turns; the quadrant by an exact rotation (products with 0 and ±1), not selects; `sincos_2pi_unit` for u ∈ [0, 1] rotates by q = round(4u) ∈ {0, …, 4} quarter turns with no reduction | ~38 (~31 unit) | 8 | — |
 //! | `sincos_pi4` | degree-7 sin with π/4 split in two f32, degree-8 cos | 10 | 8 | — |
 //! | `atan2` | t = min/max, or (min − max)/(min + max) above ½ (one division either way); degree-11 odd polynomial on \|t\| ≤ ½; octant fix as k·π/4 ± atan t with π/4 in two parts | ~49 | 6 | 1 div |
 //! | `asin` / `acos` | degree-11 odd polynomial on [0, ½]; above ½ the half-angle form with √((1−\|x\|)/2) | ~22 / ~26 | 6 / 7 | 1 sqrt |

@@ -347,7 +347,10 @@ fn sincos_2pi_unit_is_sincos_2pi_on_the_unit_interval() {
             let got = bits(<f32 as Math>::sincos_2pi_unit(u));
             if got != want || (s8[i].to_bits(), c8[i].to_bits()) != want {
                 if bad < 5 {
-                    eprintln!("u = {u:e}: unit {got:x?}, x8 {:x?}, general {want:x?}", (s8[i].to_bits(), c8[i].to_bits()));
+                    eprintln!(
+                        "u = {u:e}: unit {got:x?}, x8 {:x?}, general {want:x?}",
+                        (s8[i].to_bits(), c8[i].to_bits())
+                    );
                 }
                 bad += 1;
             }

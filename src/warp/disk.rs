@@ -16,7 +16,7 @@ use crate::warp::common::{azimuth_fraction, clamp_u};
 /// map's arithmetic, bit for bit, since sin is odd and cos even in |t|; but where the textbook
 /// picks r and the other coordinate with a select on the wedge, which LLVM compiles to a branch
 /// taken half the time in a scalar loop, min and max pick them here, and the sin/cos swap of
-/// the wedge |b| ≥ |a| is exact arithmetic.
+/// the wedge |b| ≥ |a| (and the choice of the major u below) is exact arithmetic.
 ///
 /// 1 − r comes back because the cosine hemisphere needs it exactly: z = √((1−r)(1+r)) does not
 /// cancel near the rim, where √(1 − x² − y²) loses up to 8e-5. It is computed from u, as
@@ -42,7 +42,10 @@ pub(crate) fn concentric_with_one_minus_r<L: Math>(u: V2<L>) -> (V2<L>, L) {
         r.copysign(a) * (c * m + s * n),
         r.copysign(b) * (s * m + c * n),
     );
-    let u_major = L::select(a_major, u.x, u.y);
+    // The same m picks the major u: a select here too became a branch (in the cosine
+    // hemisphere's per-call loop). Where u_major is −0 this gives +0, and z = √((1−r)(1+r))
+    // clamps its ±0 product to +0 either way.
+    let u_major = u.x * m + u.y * n;
     let one_minus_r = L::TWO * u_major.min(L::ONE - u_major);
     (p, one_minus_r)
 }

@@ -16,8 +16,8 @@ use crate::warp::common::clamp_u;
 pub fn uniform_triangle<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
     let u = clamp_u(u.to_lanes());
     // Both cases at once: with m = min(u₀, u₁)/2, b₀ = u₀ − m and b₁ = u₁ − m, since the
-    // smaller coordinate less half itself is its half exactly (Sterbenz). A min instead of a
-    // compare and two selects: five fewer instructions per point in SSE2.
+    // smaller coordinate less half itself is its half exactly (Sterbenz). A min and one product
+    // instead of a compare, two products and two selects.
     let m = u.x.min(u.y) * L::HALF;
     let b0 = u.x - m;
     let b1 = u.y - m;

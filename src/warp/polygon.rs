@@ -1,7 +1,7 @@
 //! What the spherical triangle and rectangle share: Van Oosterom–Strackee solid angles and the
 //! area-to-solid-angle pdf of a planar light.
 
-use crate::lane::V3;
+use crate::lane::{Mask, V3};
 use crate::math::Math;
 
 /// Solid angle of the triangle with vertices `a`, `b`, `c` seen from the origin, by
@@ -72,16 +72,16 @@ pub(crate) struct EdgePlanes<L: Math, const N: usize> {
 }
 
 impl<L: Math, const N: usize> EdgePlanes<L, N> {
-    /// The planes through the origin and the polygon's edges, from their normals pᵢ × pᵢ₊₁
-    /// (formed by the caller as accurately as it can: in f64 for the f32 lanes, so that the plane
-    /// of a short or distant edge keeps its direction to an ulp). `winding` has the sign of
-    /// p₀·((p₁ − p₀) × (p₂ − p₀)), so either winding works. A zero normal (a degenerate edge)
-    /// gives a NaN plane, which contains nothing.
+    /// The planes through the origin and the polygon's edges, from their unit normals along
+    /// pᵢ × pᵢ₊₁ (formed by the caller as accurately as it can: in f64 for the f32 lanes, so that
+    /// the plane of a short or distant edge keeps its direction to an ulp). `winding` has the
+    /// sign of p₀·((p₁ − p₀) × (p₂ − p₀)), so either winding works. A zero normal (a degenerate
+    /// edge) gives a NaN plane, which contains nothing.
     #[inline(always)]
-    pub(crate) fn new(normals: [V3<L>; N], winding: L, omega: L) -> Self {
+    pub(crate) fn new(units: [V3<L>; N], winding: L, omega: L) -> Self {
         let sign = L::ONE.copysign(winding);
         Self {
-            m: normals.map(|m| m.scale(sign / m.length())),
+            m: units.map(|m| m.scale(sign)),
             slack: -inside_slack(omega),
         }
     }
@@ -100,12 +100,23 @@ impl<L: Math, const N: usize> EdgePlanes<L, N> {
     }
 }
 
+/// True where [`pow2_scale`] is not 1: m outside [2⁻¹⁶, 2¹⁶] (NaN is not).
+#[inline(always)]
+pub(crate) fn needs_pow2_scale<L: Math>(m: L) -> L::Mask {
+    m.gt(L::c(65536.0)) | m.lt(L::c(1.52587890625e-5))
+}
+
 /// A power of two that brings a magnitude m into [2⁻¹⁶, 2¹⁶] (for m from 2⁻¹¹² to 2¹¹²; 1 for
 /// NaN): multiplying by it is exact, so a problem that depends only on ratios (directions, solid
 /// angles) is solved bit for bit as it would be at m's own scale, but with squares and cubes far
 /// from overflow and underflow.
 #[inline(always)]
 pub(crate) fn pow2_scale<L: Math>(m: L) -> L {
+    // Geometry at a renderer's scale needs no scaling: skip the ladder where no lane does (a
+    // branch that follows the scene, not the sample).
+    if !needs_pow2_scale(m).any() {
+        return L::ONE;
+    }
     let mut scale = L::ONE;
     let mut m = m;
     // 2^±64, 2^±32, 2^±16 (core has no powi without std).

@@ -10,7 +10,9 @@ use crate::lane::{Mask, V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::warp::common::clamp_u;
-use crate::warp::polygon::{EdgePlanes, area_pdf_from_cos, pow2_scale, vos_solid_angle};
+use crate::warp::polygon::{
+    EdgePlanes, area_pdf_from_cos, needs_pow2_scale, pow2_scale, vos_solid_angle,
+};
 use crate::warp::triangle::{uniform_triangle, uniform_triangle_inverse};
 
 /// Below this solid angle (sr) the triangle is sampled by area.
@@ -71,15 +73,24 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     // by an exact power of two: directions, Ω and pdfs depend only on ratios, so they come out
     // bit for bit as at the given scale, but a triangle 1e-14 across keeps its solid angle.
     let amax = |v: V3<L>| v.x.abs().max(v.y.abs()).max(v.z.abs());
-    let scale = pow2_scale(amax(a).max(amax(b)).max(amax(c)));
-    let (a, b, c) = (a.scale(scale), b.scale(scale), c.scale(scale));
-    // The spherical quantities (unit vertices, arcs, the angle at A) depend on each vertex's
-    // direction alone, so each vertex gets its own power of two for them: cross products of two
-    // vertices and their squares then stay in range however much nearer one vertex is than the
-    // others (a vertex 2⁻⁴⁵ as far as the others underflowed them in f32; found by the fuzz
-    // target). The plane, its offset and area sampling keep the vertices as scaled above.
-    let own = |v: V3<L>| v.scale(pow2_scale(amax(v)));
-    let (pa, pb, pc) = (own(a), own(b), own(c));
+    let (ma, mb, mc) = (amax(a), amax(b), amax(c));
+    // Only where some lane needs a power of two other than 1 (then everything below is as if
+    // each scaling were done, bit for bit): the branch follows the triangle, not the sample.
+    let (scale, (a, b, c), (pa, pb, pc)) =
+        if (needs_pow2_scale(ma) | needs_pow2_scale(mb) | needs_pow2_scale(mc)).any() {
+            let scale = pow2_scale(ma.max(mb).max(mc));
+            let (a, b, c) = (a.scale(scale), b.scale(scale), c.scale(scale));
+            // The spherical quantities (unit vertices, arcs, the angle at A) depend on each
+            // vertex's direction alone, so each vertex gets its own power of two for them: cross
+            // products of two vertices and their squares then stay in range however much nearer
+            // one vertex is than the others (a vertex 2⁻⁴⁵ as far as the others underflowed them
+            // in f32; found by the fuzz target). The plane, its offset and area sampling keep the
+            // vertices as scaled above.
+            let own = |v: V3<L>| v.scale(pow2_scale(amax(v)));
+            (scale, (a, b, c), (own(a), own(b), own(c)))
+        } else {
+            (L::ONE, (a, b, c), (a, b, c))
+        };
     let (pla, plb, plc) = (pa.length(), pb.length(), pc.length());
     let (ua, ub, uc) = (
         pa.scale(L::ONE / pla),
@@ -95,19 +106,23 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     let long = |p: V3<L>, q: V3<L>| p.dot(q).lt(L::c(-0.9));
     let ab_longest = long(ua, ub);
     let bc_longest = long(ub, uc) & !ab_longest;
-    let rot =
-        |x: V3<L>, y: V3<L>, z: V3<L>| V3::select(ab_longest, y, V3::select(bc_longest, z, x));
-    // Area sampling and the plane keep the vertices in the order given.
-    let given = (a, b, c);
-    let (a, b, c) = (rot(a, b, c), rot(b, c, a), rot(c, a, b));
-    let (pa, pb, pc) = (rot(pa, pb, pc), rot(pb, pc, pa), rot(pc, pa, pb));
-    let (ua, ub, uc) = (rot(ua, ub, uc), rot(ub, uc, ua), rot(uc, ua, ub));
-    let rotl = |x: L, y: L, z: L| L::select(ab_longest, y, L::select(bc_longest, z, x));
-    let (pla, plb, plc) = (
-        rotl(pla, plb, plc),
-        rotl(plb, plc, pla),
-        rotl(plc, pla, plb),
-    );
+    // Only where some lane has a long arc: the branch follows the triangle, not the sample.
+    let ((pa, pb, pc), (ua, ub, uc), (pla, plb, plc)) = if (ab_longest | bc_longest).any() {
+        let rot =
+            |x: V3<L>, y: V3<L>, z: V3<L>| V3::select(ab_longest, y, V3::select(bc_longest, z, x));
+        let rotl = |x: L, y: L, z: L| L::select(ab_longest, y, L::select(bc_longest, z, x));
+        (
+            (rot(pa, pb, pc), rot(pb, pc, pa), rot(pc, pa, pb)),
+            (rot(ua, ub, uc), rot(ub, uc, ua), rot(uc, ua, ub)),
+            (
+                rotl(pla, plb, plc),
+                rotl(plb, plc, pla),
+                rotl(plc, pla, plb),
+            ),
+        )
+    } else {
+        ((pa, pb, pc), (ua, ub, uc), (pla, plb, plc))
+    };
     let e1 = b - a;
     let e2 = c - a;
     // The plane, its offset and the solid angle in f64: in f32 they lose what the tilt loses
@@ -126,6 +141,7 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     };
     let nab = wide_cross(pa, pb);
     let nac = wide_cross(pa, pc);
+    let nbc = wide_cross(pb, pc);
     let (lab, lac) = (nab.length(), nac.length());
     let (sin_c, cos_c) = (lab / (pla * plb), ua.dot(ub));
     let (sin_b, cos_b) = (lac / (pla * plc), ua.dot(uc));
@@ -133,10 +149,8 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     // triple product of the unit vertices, â·(b̂ × ĉ) = sin b sin c sin α, which VOS's f64 terms
     // give accurately, rather than from the cross product of two nearly parallel normals, which
     // loses α's relative precision when α is small.
-    let cos_alpha = nab
-        .scale(L::ONE / lab)
-        .dot(nac.scale(L::ONE / lac))
-        .clamp(L::c(-1.0), L::ONE);
+    let (mab, mac) = (nab.scale(L::ONE / lab), nac.scale(L::ONE / lac));
+    let cos_alpha = mab.dot(mac).clamp(L::c(-1.0), L::ONE);
     let sin_alpha = (triple.abs() / (sin_b * sin_c)).min(L::ONE);
     let one_minus_cos_c = versine(sin_c, cos_c);
     let one_minus_cos_b = versine(sin_b, cos_b);
@@ -160,7 +174,8 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     // order and edge-on in another, and a sliver collinear in one and not in another: found by
     // the `spherical` fuzz target).
     let nn = n.length();
-    let near = a.length().min(b.length()).min(c.length());
+    // The root of the least square: the least root, bit for bit (the root is monotonic).
+    let near = a.dot(a).min(b.dot(b)).min(c.dot(c)).sqrt();
     let e3 = c - b;
     let longest = e1.dot(e1).max(e2.dot(e2)).max(e3.dot(e3));
     let valid = nn.gt(L::c(1e-6) * longest)
@@ -177,11 +192,11 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
         | !delta.is_finite()
         | sin_alpha.eq(L::ZERO);
     Setup {
-        a: given.0,
-        b: given.1,
-        c: given.2,
+        a,
+        b,
+        c,
         // The edge planes a × b, b × c, c × a (rotating the labels keeps the winding).
-        edges: EdgePlanes::new([nab, wide_cross(pb, pc), -nac], h, omega),
+        edges: EdgePlanes::new([mab, nbc.scale(L::ONE / nbc.length()), -mac], h, omega),
         h,
         ua,
         ub,

@@ -645,7 +645,12 @@ impl<P: Point3<Lane = L>, L: Math> SphericalRectangle<P> {
     /// The rectangle corner + s·ex + t·ey, s, t ∈ [0, 1], relative to the shading point, with
     /// ex ⟂ ey (a parallelogram whose edges are further than 2e-6 from orthogonal is sampled
     /// by area).
-    #[inline]
+    // Always inlined: a caller that samples once (the free functions, a light per shading point)
+    // then computes only the set-up its sample, pdf or inverse reads, and keeps it in registers
+    // rather than returning the whole set-up through memory. Measured on the scalar free
+    // function: 1.72× → 1.36–1.44× the textbook triangle (SSE2), 1.93× → 1.86× the rectangle.
+    // The sample stays a call: inlined too, the spherical triangle's was 5 % slower.
+    #[inline(always)]
     pub fn new(corner: P, ex: P, ey: P) -> Self {
         Self {
             s: setup(corner.to_lanes(), ex.to_lanes(), ey.to_lanes()),

@@ -338,7 +338,12 @@ pub struct SphericalTriangle<P: Point3> {
 
 impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
     /// The triangle with vertices `a`, `b`, `c` relative to the shading point, in either winding.
-    #[inline]
+    // Always inlined: a caller that samples once (the free functions, a light per shading point)
+    // then computes only the set-up its sample, pdf or inverse reads, and keeps it in registers
+    // rather than returning the whole set-up through memory. Measured on the scalar free
+    // function: 1.72× → 1.36–1.44× the textbook triangle (SSE2), 1.93× → 1.86× the rectangle.
+    // The sample stays a call: inlined too, the spherical triangle's was 5 % slower.
+    #[inline(always)]
     pub fn new(a: P, b: P, c: P) -> Self {
         Self {
             s: setup(a.to_lanes(), b.to_lanes(), c.to_lanes()),

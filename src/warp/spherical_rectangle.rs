@@ -673,7 +673,9 @@ impl<P: Point3<Lane = L>, L: Math> SphericalRectangle<P> {
     }
 
     /// See [`spherical_rectangle`].
-    #[inline]
+    // Always inlined as well (unlike the triangle's sample, which was slower so): 8 % off the
+    // free function in SSE2, the same in AVX2.
+    #[inline(always)]
     pub fn sample(&self, u: P::Vec2) -> (P, L) {
         let s = &self.s;
         let u = clamp_u(u.to_lanes());

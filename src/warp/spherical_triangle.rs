@@ -106,7 +106,9 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     let long = |p: V3<L>, q: V3<L>| p.dot(q).lt(L::c(-0.9));
     let ab_longest = long(ua, ub);
     let bc_longest = long(ub, uc) & !ab_longest;
-    // Only where some lane has a long arc: the branch follows the triangle, not the sample.
+    // Only the spherical quantities are relabelled; the plane, Ω and area sampling keep the
+    // order given. Only where some lane has a long arc: the branch follows the triangle, not
+    // the sample.
     let ((pa, pb, pc), (ua, ub, uc), (pla, plb, plc)) = if (ab_longest | bc_longest).any() {
         let rot =
             |x: V3<L>, y: V3<L>, z: V3<L>| V3::select(ab_longest, y, V3::select(bc_longest, z, x));

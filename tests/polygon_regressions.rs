@@ -299,3 +299,59 @@ fn point_on_a_corner_and_the_inverse_reach() {
         assert!(finite || back.is_nan());
     }
 }
+
+/// Directions, Ω and pdfs depend only on ratios, and the set-up scales the vertices by powers of
+/// two of its own where their coordinates leave [2⁻¹⁶, 2¹⁶] (and skips that where they do
+/// not): a triangle scaled by 2^k, k from −50 to 50, gives the same Ω, pdf, direction and
+/// inverse, bit for bit, whichever path it takes. Two thirds of the triangles have a vertex 2⁻¹⁰
+/// or 2⁻⁴⁰ as far as the others, so that the vertices' own powers of two differ, and so that one
+/// vertex can be in range while the others are not. (The rectangle's twin is in
+/// `tests/rectangle_accuracy.rs`. Without the scaling, Ω was 0 at 2⁻⁵⁰, where the triple product
+/// underflows; deciding on one vertex alone, it was 0 at 2⁴⁰, where the others' cubes
+/// overflow.)
+#[test]
+fn power_of_two_scaling_changes_nothing_but_the_scale() {
+    let mut state = 0x9e37_79b9_7f4a_7c15u64;
+    let mut u01 = || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 40) as f32 / 16_777_216.0
+    };
+    let mut n = 0;
+    for i in 0..2000 {
+        let mut v = || Vec3::new(2.0 * u01() - 1.0, 2.0 * u01() - 1.0, u01() + 0.05);
+        let (a, b, c) = (v(), v(), v());
+        let a = match i % 3 {
+            0 => a * 2f32.powi(-10),
+            1 => a * 2f32.powi(-40),
+            _ => a,
+        };
+        let base = SphericalTriangle::new(a, b, c);
+        if base.solid_angle() <= 0.0 {
+            continue;
+        }
+        let u = Vec2::new(u01(), u01());
+        let (w0, pdf0) = base.sample(u);
+        let back0 = base.inverse(w0);
+        for e in (-50..=50).step_by(10) {
+            let k = 2f32.powi(e);
+            let t = SphericalTriangle::new(a * k, b * k, c * k);
+            let (w, pdf) = t.sample(u);
+            let back = t.inverse(w);
+            assert!(
+                t.solid_angle().to_bits() == base.solid_angle().to_bits()
+                    && t.by_area() == base.by_area()
+                    && pdf.to_bits() == pdf0.to_bits()
+                    && w.to_array().map(f32::to_bits) == w0.to_array().map(f32::to_bits)
+                    && back.to_array().map(f32::to_bits) == back0.to_array().map(f32::to_bits),
+                "2^{e}: ({a}, {b}, {c}) u={u}: Ω {} w {w} pdf {pdf} u' {back}, \
+                 against Ω {} w {w0} pdf {pdf0} u' {back0}",
+                t.solid_angle(),
+                base.solid_angle(),
+            );
+            n += 1;
+        }
+    }
+    assert!(n > 15_000, "{n}");
+}

@@ -54,7 +54,7 @@
 
 use core::marker::PhantomData;
 
-use crate::lane::{Lane, V2, V3};
+use crate::lane::{Lane, Mask, V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::warp::common::clamp_u;
@@ -704,8 +704,13 @@ impl<P: Point3<Lane = L>, L: Math> SphericalRectangle<P> {
         for m in s.planes {
             inside = inside & w.dot(m).ge(s.slack);
         }
-        // The area pdf, t²/(|cos θ|·A) = d²/(|w·n̂|³·A) for unit w (w·n̂ in f64).
-        let area = area_pdf_solid_angle(w, s.h_unit, s.n_unit, s.inv_area);
+        // The area pdf, t²/(|cos θ|·A) = d²/(|w·n̂|³·A) for unit w (w·n̂ in f64), only where
+        // some lane samples by area: the branch follows the rectangle, not the point.
+        let area = if s.by_area.any() {
+            area_pdf_solid_angle(w, s.h_unit, s.n_unit, s.inv_area)
+        } else {
+            L::ZERO
+        };
         let pdf = L::select(s.by_area, area, L::ONE / s.omega);
         L::select(s.valid & inside, pdf, L::ZERO)
     }

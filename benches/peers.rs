@@ -2,7 +2,8 @@
 //! every ratio comes from one run:
 //!
 //! - per warp: our scalar and x8 forms, the plain glam+std version of the same formula and the
-//!   plain `wide::f32x8` version (`examples/report/plain.rs`), on 4096 in-cache points;
+//!   plain `wide::f32x8` version (`examples/report/plain.rs`), on 4096 in-cache points; for the
+//!   spherical polygons also our scalar form set up once for all the points ("ours prepared");
 //! - random points from an RNG: `Pcg32` with our scalar disk and sphere, `Pcg32x8` with the x8
 //!   forms, and rand_distr's `UnitDisc`, `UnitCircle` and `UnitSphere` (rejection and
 //!   Marsaglia's method) with the same `Pcg32`;
@@ -25,6 +26,7 @@ use criterion::{
 use glam::{Vec2, Vec3};
 use mcsample::rng::Pcg32x8;
 use mcsample::verify::registry::{self, Sampler};
+use mcsample::warp::{SphericalRectangle, SphericalTriangle};
 use mcsample::x8::{Vec2x8, Vec3x8};
 use plain::{U8, V8};
 use rand_core::Rng;
@@ -86,6 +88,37 @@ fn warps(c: &mut Criterion) {
                 black_box(&out8);
             })
         });
+        // The polygons once more, set up once for all the points (`new`, then `sample`): a
+        // caller's loop drawing many samples at one shading point.
+        match s {
+            Sampler::SphericalTriangle { v: [a, b, c] } => {
+                let t = SphericalTriangle::new(a, b, c);
+                g.bench_function("ours prepared", |bn| {
+                    bn.iter(|| {
+                        // A local copy, as a caller would hold it.
+                        let t = black_box(t);
+                        for (o, &u) in out.iter_mut().zip(black_box(&pts)) {
+                            *o = t.sample(u).0;
+                        }
+                        black_box(&out);
+                    })
+                });
+            }
+            Sampler::SphericalRectangle { v: [c0, ex, ey] } => {
+                let r = SphericalRectangle::new(c0, ex, ey);
+                g.bench_function("ours prepared", |bn| {
+                    bn.iter(|| {
+                        // A local copy, as a caller would hold it.
+                        let r = black_box(r);
+                        for (o, &u) in out.iter_mut().zip(black_box(&pts)) {
+                            *o = r.sample(u).0;
+                        }
+                        black_box(&out);
+                    })
+                });
+            }
+            _ => {}
+        }
         if let Some(f) = plain::loop_for(s) {
             g.bench_function("plain glam", |b| {
                 b.iter(|| {

@@ -135,22 +135,22 @@ fn warps(c: &mut Criterion) {
     }
 }
 
-/// The "ours prepared" entry of a polygon's group: `sample` of a light set up once, over all the
-/// points.
+/// The "ours prepared" entry of a polygon's group: `sample` of a polygon set up once, over all
+/// the points.
 fn prepared<T: Copy>(
     g: &mut BenchmarkGroup<'_, WallTime>,
     out: &mut [Vec3],
     pts: &[Vec2],
-    light: T,
+    polygon: T,
     sample: impl Fn(&T, Vec2) -> Vec3,
 ) {
     g.bench_function("ours prepared", |b| {
         b.iter(|| {
             // A local copy, as a caller would hold it: read through the reference the closure
             // captured, the rectangle's loop could not hoist its loads (66 ns a sample, not 24).
-            let light = black_box(light);
+            let polygon = black_box(polygon);
             for (o, &u) in out.iter_mut().zip(black_box(pts)) {
-                *o = sample(&light, u);
+                *o = sample(&polygon, u);
             }
             black_box(&*out);
         })

@@ -351,3 +351,57 @@ fn negative_control_one_lane_off_by_one_ulp_is_caught() {
     let err = check_lanes(&us, broken, warp::concentric_disk).unwrap_err();
     assert_eq!(err.lane, 5);
 }
+
+/// The two lane operations whose scalar and packet forms are written differently: `xorsign`
+/// (bits in both widths; a multiply by ±1 in the default) and `select_finite` (arithmetic on
+/// k ∈ {0, 1} in the scalar form, a blend in the packet form). Both widths, and the facts they
+/// stand for: `xorsign` is `copysign` wherever the sign bit of `self` is clear, and
+/// `select_finite` is `select` for finite operands but for the sign of a zero.
+#[test]
+fn xorsign_and_select_finite_agree_with_their_definitions_in_both_widths() {
+    use mcsample::lane::Lane;
+    let finite: Vec<f32> = HARD
+        .iter()
+        .copied()
+        .filter(|x| x.is_finite())
+        .chain([-0.3, 3e-39, -f32::MAX, 7.5])
+        .collect();
+    let all: Vec<f32> = HARD.iter().copied().chain(finite.iter().copied()).collect();
+    let pack = |x: f32| F32x8::splat(x);
+    let lane0 = |v: F32x8| v.to_array()[0];
+    for &x in &all {
+        for &s in &all {
+            let flipped = Lane::xorsign(x, s);
+            let expect = f32::from_bits(x.to_bits() ^ (s.to_bits() & 0x8000_0000));
+            assert_eq!(flipped.to_bits(), expect.to_bits(), "xorsign({x}, {s})");
+            assert_eq!(lane0(pack(x).xorsign(pack(s))).to_bits(), expect.to_bits());
+            if x.is_sign_positive() {
+                assert_eq!(flipped.to_bits(), Lane::copysign(x, s).to_bits());
+            }
+        }
+    }
+    for &a in &finite {
+        for &b in &finite {
+            for m in [false, true] {
+                let want = if m { a } else { b };
+                let scalar = <f32 as Lane>::select_finite(m, a, b);
+                let mask = F32x8::splat(f32::from_bits(if m { u32::MAX } else { 0 }));
+                let packet = lane0(<F32x8 as Lane>::select_finite(mask, pack(a), pack(b)));
+                assert_eq!(
+                    packet.to_bits(),
+                    want.to_bits(),
+                    "packet select_finite({m}, {a}, {b})"
+                );
+                if want != 0.0 {
+                    assert_eq!(
+                        scalar.to_bits(),
+                        want.to_bits(),
+                        "select_finite({m}, {a}, {b})"
+                    );
+                } else {
+                    assert_eq!(scalar, 0.0);
+                }
+            }
+        }
+    }
+}

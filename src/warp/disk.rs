@@ -30,22 +30,21 @@ pub(crate) fn concentric_with_one_minus_r<L: Math>(u: V2<L>) -> (V2<L>, L) {
     let a_major = abs_a.gt(abs_b);
     let r = abs_a.max(abs_b);
     let minor = abs_a.min(abs_b);
-    // At the centre r = 0: t = 0 keeps the result at the origin instead of 0/0.
+    // At the centre r = 0: t = 0 keeps the result at the origin instead of 0/0. (Dividing by
+    // max(r, least normal) instead gives the same bits in one operation fewer, but cost the
+    // scalar per-call loop 3 instructions: LLVM no longer paired the sine and cosine polynomials.)
     let t = L::select(r.eq(L::ZERO), L::ZERO, minor / r);
     let (s, c) = t.sincos_pi4();
-    // Wedge |a| > |b|: φ = (π/4)t. Otherwise φ = π/2 − (π/4)t, which swaps sin and cos. The
-    // swap is arithmetic on m ∈ {0, 1}, exact (one product is 0, the other exact): two selects on
-    // one condition became a branch taken half the time in the AVX2 build's scalar loops.
-    let m = L::select(a_major, L::ONE, L::ZERO);
-    let n = L::ONE - m;
+    // Wedge |a| > |b|: φ = (π/4)t. Otherwise φ = π/2 − (π/4)t, which swaps sin and cos. s ≥ +0
+    // and c > 0 are finite and never −0, so `select_finite` gives the selects' bits without
+    // their branch. r ≥ 0, so flipping its sign bit by a's and b's is copysign.
     let p = V2::new(
-        r.copysign(a) * (c * m + s * n),
-        r.copysign(b) * (s * m + c * n),
+        r.xorsign(a) * L::select_finite(a_major, c, s),
+        r.xorsign(b) * L::select_finite(a_major, s, c),
     );
-    // The same m picks the major u: a select here too became a branch (in the cosine
-    // hemisphere's per-call loop). Where u_major is −0 this gives +0, and z = √((1−r)(1+r))
-    // clamps its ±0 product to +0 either way.
-    let u_major = u.x * m + u.y * n;
+    // The same condition picks the major u. Where u_major is −0 the scalar form may give +0,
+    // and z = √((1−r)(1+r)) clamps its ±0 product to +0 either way.
+    let u_major = L::select_finite(a_major, u.x, u.y);
     let one_minus_r = L::TWO * u_major.min(L::ONE - u_major);
     (p, one_minus_r)
 }

@@ -4,6 +4,7 @@
 //! - per warp: our scalar and x8 forms, the plain glam+std version of the same formula and the
 //!   plain `wide::f32x8` version (`examples/report/plain.rs`), on 4096 in-cache points; for the
 //!   spherical polygons also our scalar form set up once for all the points ("ours prepared");
+//! - the tent one coordinate at a time ("tent 1D"), without the registry pair's joint NaN rule;
 //! - random points from an RNG: `Pcg32` with our scalar disk and sphere, `Pcg32x8` with the x8
 //!   forms, and rand_distr's `UnitDisc`, `UnitCircle` and `UnitSphere` (rejection and
 //!   Marsaglia's method) with the same `Pcg32`;
@@ -265,5 +266,32 @@ fn random_points(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, warps, random_points);
+/// The tent alone, one coordinate per call, against the plain version: the registry's tent
+/// sampler above is a pair with a joint NaN contract (NaN in either u drops both coordinates),
+/// which the plain pair does not have, so this is the warp's own ratio.
+fn tent_1d(c: &mut Criterion) {
+    let us: Vec<f32> = common::r2_points(N).0.iter().map(|p| p.x).collect();
+    let mut out = vec![0.0f32; N];
+    let mut g = c.benchmark_group("peers/tent 1D");
+    g.throughput(Throughput::Elements(N as u64));
+    g.bench_function("ours scalar", |b| {
+        b.iter(|| {
+            for (o, &u) in out.iter_mut().zip(black_box(&us)) {
+                *o = mcsample::warp::tent(u);
+            }
+            black_box(&out);
+        })
+    });
+    g.bench_function("plain glam", |b| {
+        b.iter(|| {
+            for (o, &u) in out.iter_mut().zip(black_box(&us)) {
+                *o = plain::tent(u);
+            }
+            black_box(&out);
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(benches, warps, tent_1d, random_points);
 criterion_main!(benches);

@@ -405,3 +405,39 @@ fn xorsign_and_select_finite_agree_with_their_definitions_in_both_widths() {
         }
     }
 }
+
+/// The registry's tent is a pair, one 2D sample: NaN in either coordinate of u makes both
+/// coordinates the canonical quiet NaN (whatever NaN came in) and the pdf 0, in both widths, and
+/// the other coordinate's tent is untouched otherwise.
+#[test]
+fn the_tent_pair_drops_both_coordinates_at_nan_in_either() {
+    let canonical = f32::NAN.to_bits();
+    let odd = [
+        f32::NAN,
+        f32::from_bits(0xffc0_1234),
+        f32::from_bits(0x7f80_0001),
+    ];
+    let s = registry::Sampler::Tent;
+    for x in odd {
+        for u in [Vec2::new(x, 0.3), Vec2::new(0.3, x), Vec2::splat(x)] {
+            let (t, pdf) = s.sample(u);
+            assert_eq!(
+                [t.x.to_bits(), t.y.to_bits()],
+                [canonical; 2],
+                "tent pair at {u:?}: {t:?}"
+            );
+            assert_eq!((t.z, pdf), (0.0, 0.0), "tent pair at {u:?}");
+            let (t8, pdf8) = s.sample(Vec2x8::splat(u));
+            for (i, v) in t8.to_array().into_iter().enumerate() {
+                assert_eq!(
+                    v.to_array().map(f32::to_bits),
+                    t.to_array().map(f32::to_bits)
+                );
+                assert_eq!(pdf8.to_array()[i].to_bits(), pdf.to_bits());
+            }
+        }
+    }
+    // Finite u: each coordinate is the tent of its own u.
+    let (t, _) = s.sample(Vec2::new(0.3, 0.9));
+    assert_eq!((t.x, t.y), (warp::tent(0.3), warp::tent(0.9)));
+}

@@ -596,7 +596,9 @@ impl Sampler {
                 #[inline(always)]
                 |u: V2<L>| {
                     // A pair of tents is one 2D sample: NaN in either coordinate drops both.
-                    let t = V2::new(warp::tent(u.x), warp::tent(u.y)).nan_where(u.any_nan());
+                    // `tent` is NaN only for NaN in, so the inputs' mask is the whole story:
+                    // `nan_if`, not `nan_where`, which would test each output again.
+                    let t = V2::new(warp::tent(u.x), warp::tent(u.y)).nan_if(u.any_nan());
                     let x = V3::new(t.x, t.y, L::ZERO);
                     (x, warp::tent_pdf(x.x) * warp::tent_pdf(x.y))
                 },

@@ -596,9 +596,11 @@ impl Sampler {
                 #[inline(always)]
                 |u: V2<L>| {
                     // A pair of tents is one 2D sample: NaN in either coordinate drops both.
-                    // `tent` is NaN only for NaN in, so the inputs' mask is the whole story:
-                    // `nan_if`, not `nan_where`, which would test each output again.
-                    let t = V2::new(warp::tent(u.x), warp::tent(u.y)).nan_if(u.any_nan());
+                    // The tent is NaN only for NaN in, so the inputs' mask is the whole story,
+                    // and the pair makes the canonical NaN itself: `warp::tent` less its own
+                    // NaN test (the same bits as `warp::tent` wherever u is not NaN).
+                    let t = V2::new(warp::tent_uncanonical(u.x), warp::tent_uncanonical(u.y))
+                        .nan_if(u.any_nan());
                     let x = V3::new(t.x, t.y, L::ZERO);
                     (x, warp::tent_pdf(x.x) * warp::tent_pdf(x.y))
                 },

@@ -82,6 +82,9 @@ pub use spherical_triangle::{
     spherical_triangle, spherical_triangle_inverse, spherical_triangle_pdf,
 };
 pub use tent::{tent, tent_inverse, tent_pdf};
+// For the registry's pair of tents (see there).
+#[cfg(feature = "std")]
+pub(crate) use tent::tent_uncanonical;
 pub use triangle::{uniform_triangle, uniform_triangle_inverse, uniform_triangle_pdf};
 
 /// The packet path: the same generic functions as [`crate::warp`], for callers who name the

@@ -8,13 +8,22 @@ use crate::math::Math;
 /// u is clamped to [0, 1]; NaN gives NaN.
 #[inline(always)]
 pub fn tent<L: Math>(u: L) -> L {
+    tent_uncanonical(u).canon()
+}
+
+/// [`tent`] without its last step, the canonical NaN: NaN in u comes out as some NaN, with
+/// whatever bits the arithmetic left. For a caller that replaces every NaN output anyway (the
+/// registry's pair of tents, NaN in either coordinate dropping both), which then pays for one
+/// NaN test instead of two.
+#[inline(always)]
+pub(crate) fn tent_uncanonical<L: Math>(u: L) -> L {
     // The distance to the nearer end: u below ½, 1 − u (exact there) above, by a min rather
     // than a select on the half, which the sign needs anyway. Its floor at 0 is the clamp of u
     // to [0, 1], bit for bit (u beyond an end gives that end), in one operation instead of two;
     // 0.max(v) keeps NaN, and −0 stays −0 as clamping would keep it.
     let v = L::ZERO.max(u.min(L::ONE - u));
     let x = L::ONE - (v * L::TWO).sqrt();
-    L::select(u.lt(L::HALF), -x, x).canon()
+    L::select(u.lt(L::HALF), -x, x)
 }
 
 /// pdf of [`tent`]: 1 − |x| on [−1, 1], else 0 (also for NaN).

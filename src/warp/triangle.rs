@@ -11,10 +11,18 @@ use crate::warp::common::clamp_u;
 /// If u₀ < u₁: b₀ = u₀/2, b₁ = u₁ − b₀; otherwise b₁ = u₁/2, b₀ = u₀ − b₁. No square root, and
 /// neighbouring u stay neighbours. b₂ is written as 1 − max(u₀, u₁), which is what 1 − b₀ − b₁ is
 /// in exact arithmetic, so b₂ ≥ 0 for every u without rounding luck. u is clamped to [0, 1]²;
-/// NaN gives NaN.
+/// NaN in either coordinate gives the canonical NaN in all three.
 #[inline(always)]
 pub fn uniform_triangle<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
-    let u = clamp_u(u.to_lanes());
+    let u = u.to_lanes();
+    // The clamp's upper bound is the canonical NaN where either coordinate is NaN (min(x, NaN)
+    // returns the NaN), so the clamp itself makes both coordinates that NaN: every output below
+    // is then arithmetic whose NaN operands are all the canonical NaN, which it propagates
+    // whichever operand the hardware returns. One shared select instead of one per output.
+    // Elsewhere this is `clamp_u`, bit for bit (min(x, 1) and min(1, x) differ only at NaN).
+    let hi = L::select(u.any_nan(), L::c(f64::NAN), L::ONE);
+    let clamp = |x: L| L::ZERO.max(x.min(hi));
+    let u = V2::new(clamp(u.x), clamp(u.y));
     // Both cases at once: with m = min(u₀, u₁)/2, b₀ = u₀ − m and b₁ = u₁ − m, since the
     // smaller coordinate less half itself is its half exactly (Sterbenz). A min and one product
     // instead of a compare, two products and two selects.
@@ -22,7 +30,7 @@ pub fn uniform_triangle<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
     let b0 = u.x - m;
     let b1 = u.y - m;
     let b2 = L::ONE - u.x.max(u.y);
-    Point3::from_lanes(V3::new(b0, b1, b2).nan_if(u.any_nan()))
+    Point3::from_lanes(V3::new(b0, b1, b2))
 }
 
 /// Inverse of [`uniform_triangle`]: barycentrics → u, as (b₀ + b₁, 2b₁) if b₀ > b₁, else

@@ -161,13 +161,15 @@ struct Strip<L> {
     y1: L,
     dy: L,
     d: L,
-    /// r0·r1 and its reciprocal, r0 = √(d² + y0²) and r1 = √(d² + y1²) the distances to the
-    /// lines of the edges y = y0, y = y1.
-    rr: L,
+    /// 1/(r0·r1), r0 = √(d² + y0²) and r1 = √(d² + y1²) the distances to the lines of the
+    /// edges y = y0, y = y1.
     inv_rr: L,
     /// β, the dihedral angle between the planes of those edges: the lune has area 2β, β on
     /// either side of the foot.
     beta: L,
+    /// d²(d² + y0² + y1²)/((r0·r1 − y0·y1)·r0·r1): the factor of x² in the denominator of
+    /// tan(g/2) where y0·y1 < 0 (see [`column`]), the same for every column.
+    opposite: L,
 }
 
 /// The column of the strip at x (see [`column`]).
@@ -193,10 +195,21 @@ fn rr_plus_yy<L: Math>(ra: L, rb: L, ya: L, yb: L, rho2: L) -> L {
     L::select(yy.lt(L::ZERO), ratio, direct)
 }
 
-/// ra·rb − ya·yb, likewise: where ya·yb > 0, as ρ²(ρ² + ya² + yb²)/(ra·rb + ya·yb).
+/// (ra·rb + ya·yb, ra·rb − ya·yb), each as [`rr_plus_yy`] forms it: the sum where ya·yb ≥ 0 and
+/// the difference where ya·yb ≤ 0 directly, the other as ρ²(ρ² + ya² + yb²) over the direct one.
+/// At most one of the two needs that quotient, so one division serves both, bit for bit as two
+/// calls of `rr_plus_yy` (the second with −yb, whose products are the same up to sign).
 #[inline(always)]
-fn rr_minus_yy<L: Math>(ra: L, rb: L, ya: L, yb: L, rho2: L) -> L {
-    rr_plus_yy(ra, rb, ya, -yb, rho2)
+fn rr_plus_minus_yy<L: Math>(ra: L, rb: L, ya: L, yb: L, rho2: L) -> (L, L) {
+    let yy = ya * yb;
+    let plus = ra.mul_add(rb, yy);
+    let minus = ra.mul_add(rb, -yy);
+    let neg = yy.lt(L::ZERO);
+    let ratio = (rho2 / L::select(neg, minus, plus)) * ya.mul_add(ya, yb.mul_add(yb, rho2));
+    (
+        L::select(neg, ratio, plus),
+        L::select(yy.gt(L::ZERO), ratio, minus),
+    )
 }
 
 /// The column at x: its corners' distances, and the two parts into which the plane at x cuts half
@@ -220,19 +233,17 @@ fn column<L: Math>(x: L, s: &Strip<L>) -> Column<L> {
     let ra = y0.mul_add(y0, rho2).sqrt();
     let rb = y1.mul_add(y1, rho2).sqrt();
     let num_t = d * s.dy;
-    let den_t = ax.mul_add(ra + rb, rr_plus_yy(ra, rb, y0, y1, rho2) + rho2);
+    let (rr_plus, rr_minus) = rr_plus_minus_yy(ra, rb, y0, y1, rho2);
+    let den_t = ax.mul_add(ra + rb, rr_plus + rho2);
     // K = dy·(ρ² + ra·rb − y0·y1)/(ra + rb); numerator and denominator of tan(g/2) divided by
     // r0·r1. Where y0·y1 < 0, ρ²·r0·r1 + x²·y0·y1 is rewritten as
     // d²·r0·r1 + x²·d²(d² + y0² + y1²)/(r0·r1 − y0·y1).
-    let k = s.dy * ((rho2 + rr_minus_yy(ra, rb, y0, y1, rho2)) / (ra + rb));
+    let k = s.dy * ((rho2 + rr_minus) / (ra + rb));
     let yy = y0 * y1;
     let num_g = ax * d * (k * s.inv_rr);
     let x2 = ax * ax;
     let same = x2.mul_add(yy * s.inv_rr, rho2);
-    let opposite = x2.mul_add(
-        d2 * (y0.mul_add(y0, y1.mul_add(y1, d2)) / (s.rr - yy) * s.inv_rr),
-        d2,
-    );
+    let opposite = x2.mul_add(s.opposite, d2);
     let den_g = d2.mul_add(
         (ra * rb) * s.inv_rr,
         L::select(yy.ge(L::ZERO), same, opposite),
@@ -415,14 +426,16 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
         L::select(beta_smaller, v, pi - v),
         L::select(beta_smaller, pi - v, v),
     );
+    let rr = dist0 * dist1;
+    let inv_rr = L::ONE / rr;
     let strip = Strip {
         y0,
         y1,
         dy: eyl,
         d,
-        rr: dist0 * dist1,
-        inv_rr: L::ONE / (dist0 * dist1),
+        inv_rr,
         beta,
+        opposite: d2 * (y0.mul_add(y0, y1.mul_add(y1, d2)) / (rr - y0 * y1) * inv_rr),
     };
     // The lune's parts beyond the rectangle, L(x0) towards −x and R(x1) towards +x: the tail
     // beyond an edge on the side away from the foot, β plus the part from the foot otherwise.
@@ -430,7 +443,15 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
     let col1 = column(x1, &strip);
     let l0 = L::select(x0.le(L::ZERO), col0.t, beta + col0.g);
     let r1 = L::select(x1.ge(L::ZERO), col1.t, beta + col1.g);
-    let omega = slab(&col0, &col1, exl, &strip);
+    // Across the foot Ω is col0.g + col1.g, which `slab` selects there; its Van Oosterom–Strackee
+    // terms (four quotients and an arctangent) only where some lane needs them: the branch
+    // follows the rectangle, not the sample.
+    let across = x0.le(L::ZERO) & x1.ge(L::ZERO);
+    let omega = if (!across).any() {
+        slab(&col0, &col1, exl, &strip)
+    } else {
+        col0.g + col1.g
+    };
 
     let sign = L::ONE.copysign(h);
     // Each edge's plane, its normal p × e in f64: an f32 cross product would turn it by up to

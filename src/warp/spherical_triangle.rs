@@ -50,7 +50,8 @@ struct Setup<L: Math> {
     unscale: L,
     omega: L,
     /// δ = α − Ω/2 (positive in every spherical triangle) and π − α, α the interior angle at
-    /// A: the accurate terms of sin(α − E/2) (see `arvo`).
+    /// A: the accurate terms of sin(α − E/2) (see `arvo`). π − α is +∞ where α ≤ π/2 in every
+    /// lane, where the map never uses it.
     delta: L,
     pi_minus_alpha: L,
     /// 1 − cos and sin of the arc AB.
@@ -164,7 +165,15 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     // directly, which f32 cannot recover from α near π.
     let sbc = sin_b * sin_c;
     let delta = (sin_alpha * sbc).atan2(cos_alpha.mul_add(sbc, one_minus_cos_b * one_minus_cos_c));
-    let pi_minus_alpha = sin_alpha.atan2(-cos_alpha);
+    // The map takes π − α + E/2 only where it is below α − E/2, which needs α > π/2: where no
+    // lane's α is obtuse, +∞ leaves α − E/2 the choice (at α = π/2, E = 0 the two are within
+    // rounding of π/2, whose sine is 1 either way) and saves the arctangent. The branch follows
+    // the triangle, not the sample.
+    let pi_minus_alpha = if cos_alpha.lt(L::ZERO).any() {
+        sin_alpha.atan2(-cos_alpha)
+    } else {
+        L::c(f64::INFINITY)
+    };
 
     // Collinear vertices can leave a rounding-sized normal, and a shading point in the plane a
     // rounding-sized triple product (with FMA, say), while VOS still reports up to 2π. Neither is

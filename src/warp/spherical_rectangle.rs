@@ -443,15 +443,7 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
     let col1 = column(x1, &strip);
     let l0 = L::select(x0.le(L::ZERO), col0.t, beta + col0.g);
     let r1 = L::select(x1.ge(L::ZERO), col1.t, beta + col1.g);
-    // Across the foot Ω is col0.g + col1.g, which `slab` selects there; its Van Oosterom–Strackee
-    // terms (four quotients and an arctangent) only where some lane needs them: the branch
-    // follows the rectangle, not the sample.
-    let across = x0.le(L::ZERO) & x1.ge(L::ZERO);
-    let omega = if (!across).any() {
-        slab(&col0, &col1, exl, &strip)
-    } else {
-        col0.g + col1.g
-    };
+    let omega = slab(&col0, &col1, exl, &strip);
 
     let sign = L::ONE.copysign(h);
     // Each edge's plane, its normal p × e in f64: an f32 cross product would turn it by up to

@@ -185,20 +185,10 @@ struct Column<L> {
     rho: L,
 }
 
-/// ra·rb + ya·yb for ra = √(ρ² + ya²), rb = √(ρ² + yb²), without cancellation: where ya·yb < 0,
-/// as ρ²(ρ² + ya² + yb²)/(ra·rb − ya·yb).
-#[inline(always)]
-fn rr_plus_yy<L: Math>(ra: L, rb: L, ya: L, yb: L, rho2: L) -> L {
-    let yy = ya * yb;
-    let direct = ra.mul_add(rb, yy);
-    let ratio = (rho2 / ra.mul_add(rb, -yy)) * ya.mul_add(ya, yb.mul_add(yb, rho2));
-    L::select(yy.lt(L::ZERO), ratio, direct)
-}
-
-/// (ra·rb + ya·yb, ra·rb − ya·yb), each as [`rr_plus_yy`] forms it: the sum where ya·yb ≥ 0 and
-/// the difference where ya·yb ≤ 0 directly, the other as ρ²(ρ² + ya² + yb²) over the direct one.
-/// At most one of the two needs that quotient, so one division serves both, bit for bit as two
-/// calls of `rr_plus_yy` (the second with −yb, whose products are the same up to sign).
+/// (ra·rb + ya·yb, ra·rb − ya·yb) for ra = √(ρ² + ya²), rb = √(ρ² + yb²), without
+/// cancellation: the sum where ya·yb ≥ 0 and the difference where ya·yb ≤ 0 directly, the other
+/// as ρ²(ρ² + ya² + yb²) over the direct one (their product is ρ²(ρ² + ya² + yb²)). At most one
+/// of the two needs that quotient, so one division serves both.
 #[inline(always)]
 fn rr_plus_minus_yy<L: Math>(ra: L, rb: L, ya: L, yb: L, rho2: L) -> (L, L) {
     let yy = ya * yb;
@@ -418,7 +408,7 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
     let dist0 = y0.mul_add(y0, d2).sqrt();
     let dist1 = y1.mul_add(y1, d2).sqrt();
     let num = d * eyl;
-    let den = rr_plus_yy(dist0, dist1, y0, y1, d2) + d2;
+    let den = rr_plus_minus_yy(dist0, dist1, y0, y1, d2).0 + d2;
     let beta_smaller = num.le(den);
     let v = L::TWO * L::select(beta_smaller, num, den).atan2(L::select(beta_smaller, den, num));
     let pi = L::c(core::f64::consts::PI);

@@ -6,13 +6,16 @@
 //! the worst pdf error, and the χ² p-value of 10⁶ samples. Then, per sequence generator, scalar
 //! and x8 ns per value, the L2-star discrepancy at N = 1024 and the RMSE slopes on the Gaussian
 //! and the disk indicator (see `sequences.rs`). `-- --quick` is a shorter run for CI;
-//! `-- --json PATH` also writes the numbers as JSON.
+//! `-- --json PATH` also writes the numbers as JSON, and `-- --markdown PATH` the printed tables
+//! as Markdown (`table.rs` builds each table once for both; REPORT.md is a full run's).
 
 mod direct;
 mod estimators;
+mod markdown;
 mod plain;
 mod plots;
 mod sequences;
+mod table;
 
 use std::fmt::Write as _;
 use std::hint::black_box;
@@ -33,6 +36,7 @@ struct Config {
     quick: bool,
     json: Option<String>,
     plots: Option<String>,
+    markdown: Option<String>,
 }
 
 struct Row {
@@ -335,6 +339,7 @@ fn main() {
         quick: false,
         json: None,
         plots: None,
+        markdown: None,
     };
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
@@ -342,12 +347,16 @@ fn main() {
             "--quick" => cfg.quick = true,
             "--json" => cfg.json = args.next(),
             "--plots" => cfg.plots = args.next(),
+            "--markdown" => cfg.markdown = args.next(),
             other => {
-                eprintln!("unknown argument {other}; use --quick, --json PATH, --plots DIR");
+                eprintln!(
+                    "unknown argument {other}; use --quick, --json PATH, --markdown PATH, --plots DIR"
+                );
                 std::process::exit(2);
             }
         }
     }
+    let md_head = cfg.markdown.as_ref().map(|_| markdown::head());
     let cpu = cpu_name();
     let feats = target_features();
     println!(
@@ -357,13 +366,6 @@ fn main() {
     );
     println!("  CPU: {cpu}");
     println!("  target features: {}", feats.join(", "));
-    println!(
-        "  timings: {POINTS} in-cache points, median of interleaved runs; errors vs the f64 instance;"
-    );
-    println!(
-        "  χ²: {} samples, Mitsuba's method (p < 1e-3 would be a failure at the Šidák level)\n",
-        if cfg.quick { "2e5" } else { "1e6" }
-    );
 
     let pts = uniform_points(POINTS, 1);
     let packets: Vec<Vec2x8> = pts
@@ -372,181 +374,35 @@ fn main() {
         .collect();
     let err_pts = error_points(cfg.quick);
 
-    println!(
-        "{:<28} {:>10} {:>9} {:>10} {:>8} {:>12} {:>24} {:>12} {:>9}",
-        "warp",
-        "scalar ns",
-        "vs plain",
-        "x8 ns",
-        "speedup",
-        "max abs err",
-        "worst u",
-        "pdf rel err",
-        "χ² p"
-    );
-    let mut rows = Vec::new();
-    for s in registry::registry() {
-        let r = measure(&cfg, s, &pts, &packets, &err_pts);
-        let vs_plain = r.scalar_vs_plain.map_or("-".into(), |v| format!("{v:.2}×"));
-        println!(
-            "{:<28} {:>10.2} {:>9} {:>10.2} {:>7.1}× {:>12.2e} {:>24} {:>12.2e} {:>9.4}",
-            r.name,
-            r.scalar_ns,
-            vs_plain,
-            r.x8_ns,
-            r.scalar_ns / r.x8_ns,
-            r.max_abs_err,
-            format!("({:.7}, {:.7})", r.worst_u.x, r.worst_u.y),
-            r.max_pdf_rel_err,
-            r.chi2_p
-        );
-        rows.push(r);
-    }
-    println!("\nprepared lights: scalar ns of the first sample at a new shading point (set-up");
-    println!("  included) and of each further sample of the light prepared there (`light.at(p)`):");
-    println!(
-        "{:<28} {:>10} {:>10} {:>8}",
-        "light", "first ns", "further ns", "ratio"
-    );
-    for r in &rows {
-        if let Some((first, further)) = r.first_further_ns {
-            println!(
-                "{:<28} {:>10.2} {:>10.2} {:>7.1}×",
-                r.name,
-                first,
-                further,
-                first / further
-            );
-        }
-    }
-    println!("\nspherical sampling stability (f32 map vs its f64 instance, no area fallback):");
-    println!(
-        "{:<24} {:>12} {:>14} {:>14}",
-        "light", "Ω (sr)", "max dir err", "err / √Ω"
-    );
+    // Each table is printed as soon as it is measured, and kept for --markdown.
+    let mut tables = Vec::new();
+    let mut show = |t: table::Table| {
+        print!("{}", t.text());
+        tables.push(t);
+    };
+    let rows: Vec<Row> = registry::registry()
+        .into_iter()
+        .map(|s| measure(&cfg, s, &pts, &packets, &err_pts))
+        .collect();
+    show(table::warps(&cfg, &rows));
+    show(table::prepared(&rows));
     let stab = stability(cfg.quick);
-    for (name, omega, err, rel) in &stab {
-        println!("{name:<24} {omega:>12.3e} {err:>14.2e} {rel:>14.2e}");
-    }
-    println!(
-        "\nsequences: ns per f32 value, for a plain loop of scalar calls (LLVM may vectorise it),"
-    );
-    println!(
-        "  scalar calls one at a time on opaque indices, and x8; L2* = RMS L2-star discrepancy"
-    );
-    println!(
-        "  of 1024 points over 32 seeds (iid: {:.2e}); RMSE slopes over N = 16…4096, {} seeds:",
-        ((0.25f64 - 1.0 / 9.0) / 1024.0).sqrt(),
-        if cfg.quick { 16 } else { 64 }
-    );
-    println!(
-        "{:<32} {:>10} {:>10} {:>10} {:>8} {:>10} {:>10} {:>10}",
-        "generator", "loop ns", "call ns", "x8 ns", "x8/call", "L2* 1024", "Gaussian", "disk"
-    );
+    show(table::stability(&stab));
     let seqs = sequences::sequences(cfg.quick);
-    for r in &seqs {
-        println!(
-            "{:<32} {:>10.3} {:>10.3} {:>10.3} {:>7.1}× {:>10.2e} {:>10.3} {:>10.3}",
-            r.name,
-            r.scalar_ns,
-            r.scalar_call_ns,
-            r.x8_ns,
-            r.scalar_call_ns / r.x8_ns,
-            r.l2_star_1024,
-            r.slope_gaussian,
-            r.slope_disk
-        );
-    }
-    println!(
-        "\nestimators: variance per estimate relative to the better single technique, at {} + {}",
-        estimators::N,
-        estimators::N
-    );
-    println!(
-        "  samples (techniques p₁ = 1 and p₂ = 0.2 + 1.6x on [0, 1]; alone, each takes {} samples; RIS takes",
-        2 * estimators::N
-    );
-    println!("  that many candidates from p₁ per f evaluation):");
+    show(table::sequences(&cfg, &seqs));
     let est = estimators::variances(&cfg);
-    let names = mcsample::verify::mis1d::ESTIMATORS;
-    print!("{:<22}", "estimator");
-    for i in mcsample::verify::mis1d::INTEGRANDS {
-        print!(" {:>16}", i.name);
-    }
-    println!();
-    for (k, name) in names.iter().enumerate() {
-        print!("{name:<22}");
-        for row in est.iter().skip(k).step_by(names.len()) {
-            print!(" {:>16.3e}", row.vs_best_single);
-        }
-        println!();
-    }
+    show(table::estimators(&est));
     let weights = estimators::weight_times(&cfg);
-    println!("\nMIS weights, ns per weight (pdfs over twelve decades):");
-    println!(
-        "{:<12} {:>10} {:>10} {:>8}",
-        "heuristic", "scalar", "x8", "speedup"
-    );
-    for w in &weights {
-        println!(
-            "{:<12} {:>10.3} {:>10.3} {:>7.1}×",
-            w.name,
-            w.scalar_ns,
-            w.x8_ns,
-            w.scalar_ns / w.x8_ns
-        );
-    }
-
+    show(table::weights(&weights));
     let direct_rows = direct::direct(&cfg);
-    println!(
-        "\ndirect lighting (mcsample::direct): N = {} + {} samples per estimate, independent",
-        direct::N,
-        direct::N
-    );
-    println!(
-        "  samples, unit visibility; bias in standard errors of the mean of {} estimates;",
-        direct_rows.first().map_or(0, |r| r.run.estimates)
-    );
-    println!(
-        "  relative RMSE of one estimate; x8 ns per estimate per lane; efficiency 1/(MSE·time)"
-    );
-    println!(
-        "  relative to the best single strategy (uniform, light or BSDF sampling) of the scene:"
-    );
-    println!(
-        "{:<20} {:<18} {:>11} {:>8} {:>10} {:>9} {:>9} {:>7} {:>9}",
-        "scene",
-        "strategy",
-        "reference",
-        "bias σ",
-        "rel RMSE",
-        "x8 ns",
-        "scalar ns",
-        "rays",
-        "eff/best"
-    );
-    for r in &direct_rows {
-        println!(
-            "{:<20} {:<18} {:>11.5e} {:>8} {:>10.3e} {:>9.0} {:>9.0} {:>7.2} {:>9.3}",
-            r.scene,
-            r.strategy,
-            r.reference,
-            r.bias_sigma().map_or("-".into(), |b| format!("{b:.2}")),
-            r.run.rel_rmse,
-            r.ns,
-            r.scalar_ns,
-            r.run.shadow_rays,
-            r.vs_best_single
-        );
-    }
-
+    show(table::direct(&direct_rows));
     let (copy_ns, cos_ns) = streaming(&cfg);
-    println!(
-        "\nstreaming ({} points): copy kernel {copy_ns:.3} ns/pt, x8 cosine_hemisphere {cos_ns:.3} ns/pt, ratio {:.2}",
-        if cfg.quick { "2^20" } else { "2^24" },
-        cos_ns / copy_ns
-    );
+    show(table::streaming(&cfg, copy_ns, cos_ns));
 
+    if let (Some(path), Some(head)) = (&cfg.markdown, &md_head) {
+        markdown::write(path, head, &tables).expect("cannot write the Markdown report");
+        println!("wrote {path}");
+    }
     if let Some(path) = &cfg.json {
         let mut s = String::new();
         let esc = |x: &str| x.replace('\\', "\\\\").replace('"', "\\\"");

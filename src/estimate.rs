@@ -5,7 +5,7 @@
 //!   stays accurate where the textbook Σx² − (Σx)²/n cancels: on 10⁷ values of 1e8 ± 1 the naive
 //!   form loses every digit of the variance, while this one matches a compensated two-pass result
 //!   within 1e-10 relative, as it does on 1e9 + U(0, 1) and on magnitudes spread over twenty
-//!   decades (worst measured 1.8e-11, `tests/estimate.rs`). [`MeanVar::merge`] is Chan et al.'s
+//!   decades (worst measured 1.8e-11, `tests/all/estimate/accumulators.rs`). [`MeanVar::merge`] is Chan et al.'s
 //!   pairwise update, so partial accumulators (threads, packet lanes) combine exactly as one long
 //!   stream would, up to rounding. [`MeanVarX8`] keeps one accumulator per packet lane.
 //! - [`roulette`] continues with probability q and weights survivors by 1/q (unbiased: the mean

@@ -17,7 +17,7 @@
 //! every finite input, and the products n·pdf never overflow.
 //!
 //! **Error** (f32, measured on 10⁶ pairs with pdfs log-uniform over 1e-30…1e30 plus zeros,
-//! subnormals and ∞, `tests/mis.rs`): against the f64 weight of the same inputs, balance and
+//! subnormals and ∞, `tests/all/estimate/mis.rs`): against the f64 weight of the same inputs, balance and
 //! cutoff are within 3 ulp of the weight (2.8 seen), power within 5 (4.8 seen: squaring doubles
 //! the ratio's error), maximum exact, wherever the weight is above 1e-30 (below, the pdf ratio is
 //! subnormal and loses bits). The two weights of one pair, `w(f, g)` and `w(g, f)`, come from the
@@ -270,7 +270,7 @@ fn pick<L: Lane>(m: L::Mask, a: (L, L, L), b: (L, L, L)) -> (L, L, L) {
 /// - [`estimate`](Self::estimate), the direct estimate: α from the same samples. The residual sum
 ///   then vanishes exactly (Σₖnₖpₖ/S = 1), so F = α₁ + α₂. It is consistent, with a bias of
 ///   order 1/N that is not small for few samples: on the 1D integrands of
-///   `tests/mis_estimators.rs` it measured −2.7 % to −14 % of the integral at 4 samples per
+///   `tests/all/estimate/mis_estimators.rs` it measured −2.7 % to −14 % of the integral at 4 samples per
 ///   technique, −0.48 % to −2.3 % at 16 and −0.10 % to −0.44 % at 64 (0 where f lies in the span
 ///   of the pdfs). Accumulate over many estimates, or use the unbiased form, where that matters.
 /// - [`FixedAlpha`], the unbiased form: α fixed beforehand (from a pilot pass with this

@@ -1,6 +1,6 @@
 //! Analytic irradiance from lights of radiance 1, in f64: the ground truths that estimators are
 //! judged against. `no_std` (libm). Each is checked against brute-force quadrature in
-//! `tests/reference.rs`, including the horizon cases.
+//! `tests/all/estimate/reference.rs`, including the horizon cases.
 //!
 //! Irradiance here is E = ∫ max(0, n·ω) dω over the directions ω that see the light, for a
 //! receiver with normal n; a Lambertian surface of albedo ρ then reflects L = ρE/π.

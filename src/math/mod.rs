@@ -12,7 +12,7 @@
 //! has FMA), compares and selects, and bit operations on the integer lane. There are no branches
 //! on values and no platform float↔int conversions (integers come from the bits of a float after
 //! adding `1.5·2²³`). So within one build, lane *i* of a packet result equals the scalar result for
-//! lane *i*'s input, bit for bit, NaN for NaN; `tests/math_ulp.rs` checks it on 2¹⁶ inputs per
+//! lane *i*'s input, bit for bit, NaN for NaN; `tests/all/math.rs` checks it on 2¹⁶ inputs per
 //! function. Builds with and without FMA give different bits (both within the table).
 //!
 //! # Error
@@ -27,7 +27,7 @@
 //! overflow compare).
 //!
 //! Measured maxima. "All" means every f32 of the domain (the ignored `exhaustive_*` tests of
-//! `tests/math_ulp.rs`); `atan2` was measured on 2³⁰ pairs (random angles and radii over 2^±120,
+//! `tests/all/math.rs`); `atan2` was measured on 2³⁰ pairs (random angles and radii over 2^±120,
 //! random bit patterns, sweeps along x = ±1 and y = ±1, and pairs near the switch points). The
 //! default build is x86-64 without FMA; the second column is `-C target-feature=+avx2,+fma`.
 //!

@@ -26,7 +26,7 @@
 //! | [`sobol`], [`sobol_2d`] | dimensions 0 and 1: a (0, m, 2)-net for every N = 2ᵐ | −1.33 |
 //!
 //! The slopes are of log RMSE against log N on e^{−x²−y²} over N = 16…4096 and 64 seeds, as the
-//! report measures them ([`quality::rmse_slope`]); `tests/seq_convergence.rs` holds the targets.
+//! report measures them ([`quality::rmse_slope`]); `tests/all/seq/convergence.rs` holds the targets.
 //!
 //! The stratified families read an index as round ⌊index/N⌋ and position index mod N: each
 //! round of N consecutive indices is a complete set, with its own order and jitter. Strata are

@@ -172,7 +172,7 @@ pub fn registry() -> Vec<Sampler> {
             center: Vec3::new(0.6, -0.3, 3.0),
             radius: 1.0,
         },
-        // sin²θmax = 1e-4: smaller lights (down to 1e-12) are tested in `tests/scene.rs`, where
+        // sin²θmax = 1e-4: smaller lights (down to 1e-12) are tested in `tests/all/scene/lights.rs`, where
         // the χ² judge is the f64 pdf; here the f32 pdf's slack of 2ε in sin θ (a band 5e-5 of
         // this cone's area, 5e-4 of one with sin²θmax = 1e-6) stays below what 1e6 samples see.
         LightSphere {

@@ -50,7 +50,7 @@
 //! size, which is exact and changes nothing but keeps squares and cubes of coordinates from
 //! 1e-17 to 1e19 in range. Measured against its f64 instance, the f32 map's direction error is
 //! at most 5.7e-7 on 2.4e5 random rectangles from 2π down to 1e-9 sr
-//! (`tests/rectangle_accuracy.rs`).
+//! (`tests/all/warp/rectangle_accuracy.rs`).
 
 use core::marker::PhantomData;
 
@@ -65,7 +65,7 @@ use crate::warp::polygon::{area_pdf_solid_angle, pow2_scale};
 /// The map's f32 direction error against its f64 instance is at most 5.7e-7 from 2π down to 1e-9
 /// sr, measured on 2.4e5 random rectangles of every kind (anywhere above the horizon, far and
 /// small, grazing, straddling the foot of the perpendicular, larger than their distance, nearly
-/// edge-on; `tests/rectangle_accuracy.rs`, 80 u each), and at most 2.8e-7 on the report's stability
+/// edge-on; `tests/all/warp/rectangle_accuracy.rs`, 80 u each), and at most 2.8e-7 on the report's stability
 /// rows (a facing square and a tilted 2:1 rectangle from 1e-9 to 6.3 sr). (The old Σγ − 2π form:
 /// 2e-6 at 0.01 sr, 9e-6 at 1e-3 sr and 4e-4 at 1e-6 sr on the facing square, up to 4e-2 on random
 /// grazing rectangles, which is why this was 0.02.) So, as for the triangle, the threshold is set

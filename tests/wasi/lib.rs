@@ -1,1 +1,1 @@
-//! Empty: this package exists for its tests, which are the crate's own (`../*.rs`).
+//! Empty: this package exists for its tests, which are the crate's own (`../all`).

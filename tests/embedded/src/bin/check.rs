@@ -26,7 +26,7 @@ use mcsample::scene::{DiskLight, Lambert, Light, RectangleLight, SphereLight, Tr
 use mcsample::{mis, seq, warp};
 use mcsample_firmware::exit;
 
-include!("../../../golden.in");
+include!("../../../all/seq/golden.in");
 
 /// Distance bound for warped points and directions.
 const POINT_TOL: f64 = 2e-6;

@@ -9,11 +9,9 @@
 //! the zoomed samples is pdf·hs/2, and 101 rows of cells resolve the lobe instead of one. A sample
 //! outside the cap counts as outside the domain and fails the test.
 
-mod common;
-
 use std::f64::consts::PI;
 
-use common::TestRng;
+use crate::common::TestRng;
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use mcsample::verify::registry::{self, Sampler};
 use mcsample::verify::{

@@ -7,9 +7,7 @@
 //!   that one packet mixes code paths (spherical and area sampling, inside and outside a
 //!   support), and the frame.
 
-mod common;
-
-use common::TestRng;
+use crate::common::TestRng;
 use glam::{Vec2, Vec3};
 use mcsample::frame::{self, Frame};
 use mcsample::verify::registry;

@@ -2,9 +2,7 @@
 //! adversarial streams, merging, the packet accumulators, Russian roulette (mean and variance,
 //! Veach's V + (1/q − 1)E[F²]) and splitting (mean unchanged, the optimal count).
 
-mod common;
-
-use common::TestRng;
+use crate::common::TestRng;
 use mcsample::estimate::{self, MeanVar, MeanVarX8, ROULETTE_Q_MIN};
 use mcsample::lane::F32x8;
 

@@ -328,7 +328,7 @@ fn new64(u: DVec2, c: DVec3, ex: DVec3, ey: DVec3) -> DVec3 {
 }
 
 /// The table of worst direction errors, old map and the crate's, on `RECTS` rectangles of each
-/// kind (default 4000): `cargo test --release --test rectangle_accuracy -- --ignored
+/// kind (default 4000): `cargo test --release --test all rectangle_accuracy -- --ignored
 /// --nocapture`.
 #[test]
 #[ignore = "prints the error tables"]

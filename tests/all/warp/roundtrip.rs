@@ -7,9 +7,7 @@
 //! compared (`Sampler::determined`): u₁ at the disk's centre or a lobe's axis, u₀ at the
 //! spherical triangle's apex B (u₁ = 0).
 
-mod common;
-
-use common::TestRng;
+use crate::common::TestRng;
 use glam::Vec2;
 use mcsample::verify::registry::{self, Sampler};
 use mcsample::warp;

@@ -641,7 +641,7 @@ pub fn rect_coords(p: D3, corner: D3, ex: D3, ey: D3) -> D3 {
     ]
 }
 
-/// Sanity self-test of the references: used by `accuracy.rs` so a broken reference cannot pass
+/// Sanity self-test of the references: used by `warp::accuracy` so a broken reference cannot pass
 /// silently (each reference against an independent fact).
 pub fn self_check() -> Result<(), String> {
     let mut err = Vec::new();

@@ -2,9 +2,7 @@
 //! the error against the f64 weight of the same inputs, packets against scalars bit for bit, the
 //! N-technique forms, and one-sample MIS's choice and rescaled u.
 
-mod common;
-
-use common::TestRng;
+use crate::common::TestRng;
 use mcsample::lane::F32x8;
 use mcsample::mis;
 

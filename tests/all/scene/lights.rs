@@ -5,15 +5,13 @@
 //! distance, and that distance agrees within 1e-5 with an independent f64 ray intersection;
 //! `pdf` is 0 (and `hit` ∞) just outside the silhouette and positive just inside; ∫pdf dω = 1
 //! by quadrature; packets equal scalars. For every BSDF: the white furnace, reciprocity and
-//! packets. The χ² tests of the lights and BSDFs run in `distribution.rs` through the registry;
+//! packets. The χ² tests of the lights and BSDFs run in `warp::distribution` through the registry;
 //! the hard configurations (sin²θmax = 1e-12, 1e-8 sr polygons) are tested here against the f64
 //! instance's pdf, with negative controls.
 
-mod common;
-
 use std::f64::consts::PI;
 
-use common::TestRng;
+use crate::common::TestRng;
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use mcsample::scene::{
     DiskLight, Lambert, Light, LightChoice, Phong, PowerTable, RectangleLight, SphereLight,

@@ -306,7 +306,7 @@ fn point_on_a_corner_and_the_inverse_reach() {
 /// inverse, bit for bit, whichever path it takes. Two thirds of the triangles have a vertex 2⁻¹⁰
 /// or 2⁻⁴⁰ as far as the others, so that the vertices' own powers of two differ, and so that one
 /// vertex can be in range while the others are not. (The rectangle's twin is in
-/// `tests/rectangle_accuracy.rs`. Without the scaling, Ω was 0 at 2⁻⁵⁰, where the triple product
+/// `warp::rectangle_accuracy`. Without the scaling, Ω was 0 at 2⁻⁵⁰, where the triple product
 /// underflows; deciding on one vertex alone, it was 0 at 2⁴⁰, where the others' cubes
 /// overflow.)
 #[test]

@@ -1,11 +1,10 @@
 //! `Pcg32x8` against `rand_pcg::Pcg32`, lane by lane: outputs, floats, jump-ahead, a golden vector
 //! and a negative control for the comparison itself.
 
+use super::golden::GOLDEN_PCG32;
 use mcsample::rng::Pcg32x8;
 use rand_core::Rng;
 use rand_pcg::Pcg32;
-
-include!("golden.in");
 
 const STEPS: usize = 10_000;
 const PCG_MULTIPLIER: u64 = 6_364_136_223_846_793_005;

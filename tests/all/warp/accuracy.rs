@@ -6,12 +6,10 @@
 //! Bounds (the crate's accuracy targets, as the README states them): warped points and
 //! directions within 2e-6 absolute, measured as the Euclidean distance |got − want| (which bounds
 //! every component); pdfs within 1e-5 relative. Where a test uses another bound it says why next
-//! to it. Every test prints its measured maximum and the worst input (`cargo test --test accuracy
+//! to it. Every test prints its measured maximum and the worst input (`cargo test --test all warp::accuracy
 //! -- --nocapture`).
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use glam::{Vec2, Vec3};
 use mcsample::frame::Frame;
 use mcsample::verify::registry::{self, Sampler};
@@ -947,7 +945,7 @@ fn spherical_rectangle_by_area_below_and_above_thresholds() {
             0.3,
         ),
         // No rectangle is above SPHERICAL_RECTANGLE_MAX_SR = 2π: the map holds to 3.5e-7 up to
-        // rectangles 1e5 times larger than their distance (tests/rectangle_accuracy.rs).
+        // rectangles 1e5 times larger than their distance (`warp::rectangle_accuracy`).
     ];
     for r in rects {
         let omega = rectangle_solid_angle(r.corner, r.ex, r.ey);

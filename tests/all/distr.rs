@@ -1,6 +1,5 @@
 //! The `rand` feature: each distribution returns exactly the warp's value at the u it draws
 //! (two `next_u32`, top 24 bits each), so the warp's pdf and inverse apply to its samples.
-#![cfg(feature = "rand")]
 
 use glam::{Vec2, Vec3};
 use mcsample::distr::{

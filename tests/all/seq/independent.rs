@@ -1,9 +1,7 @@
 //! `seq::independent`: golden values, an independent re-implementation of the hash, packet vs
 //! scalar bit equality, the [0, 1) range, moments and χ² uniformity, with negative controls.
 
-mod common;
-
-use common::TestRng;
+use crate::common::TestRng;
 use glam::DVec2;
 use mcsample::seq::{self, U32Lane};
 use mcsample::verify::{ChiSquare, check_lanes};

@@ -5,9 +5,7 @@
 //! each per estimate, and integrands with exact integrals (their α comes from Simpson quadrature
 //! of the defining integrals).
 
-mod common;
-
-use common::TestRng;
+use crate::common::TestRng;
 use mcsample::estimate::MeanVar;
 use mcsample::lane::F32x8;
 use mcsample::mis::{self, FixedAlpha, OptimalMis, Reservoir};

@@ -10,15 +10,13 @@
 //! result equal to the rounded reference counts 0 (this is how ±∞ and ±0 compare; the sign of
 //! zero and the exact specials are checked separately).
 //!
-//! `cargo test --test math_ulp` measures 2^24 points per function. `cargo test --test math_ulp --
+//! `cargo test --test all math::` measures 2^24 points per function. `cargo test --test all math:: --
 //! --ignored` runs the exhaustive sweeps (every f32 of each domain; a few minutes) that the
 //! documented maxima come from.
 
-mod common;
-
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
 
-use common::TestRng;
+use crate::common::TestRng;
 use mcsample::math::Math;
 use mcsample::x8::F32x8;
 

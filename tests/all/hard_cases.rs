@@ -1,5 +1,5 @@
 //! Hard inputs, each with the behaviour it requires, one test per case (run one by name, e.g.
-//! `cargo test --test hard_cases case_04`):
+//! `cargo test --test all hard_cases::case_04`):
 //!
 //! - exact values at the centre of the square: the concentric map (Shirley and Chiu 1997) sends
 //!   (½, ½) to (0, 0), so the cosine hemisphere (Malley's method) gives +z with pdf 1/π (1); and
@@ -36,11 +36,9 @@
 //! Case numbers are stable names (19, the generators' u < 1, lives in `seq_generators`). A case
 //! may check many inputs: it collects every sub-failure and reports them together.
 
-mod common;
-
 use std::rc::Rc;
 
-use common::*;
+use crate::common::*;
 use glam::{DVec3, Vec2, Vec3};
 use mcsample::estimate::{self, MeanVar};
 use mcsample::frame::Frame;
@@ -721,7 +719,7 @@ fn degenerate_triangles() -> Vec<(&'static str, Vec3, Vec3, Vec3)> {
         ("NaN vertex", Vec3::new(f32::NAN, 0.0, 1.0), q, s),
         // Vertices at f32::MAX are no longer here: their edges overflow f32, but the set-up
         // scales the vertices by a power of two first, and such a triangle is a light
-        // (`tests/polygon_regressions.rs` checks its solid angle).
+        // (`warp::polygon_regressions` checks its solid angle).
     ]
 }
 

@@ -3,9 +3,8 @@
 //! generator promises (with negative controls that break a permutation), and the documented
 //! behaviour on extreme inputs.
 
-mod common;
-
-use common::TestRng;
+use super::golden::{GOLDEN_INDICES, GOLDEN_SEQ};
+use crate::common::TestRng;
 use glam::Vec2;
 use mcsample::seq::{
     self, MAX_STRATA,
@@ -174,8 +173,6 @@ fn golden_vectors() {
         assert_eq!(g.as_slice(), w, "generator {k}: {g:#x?}");
     }
 }
-
-include!("golden.in");
 
 // ---------------------------------------------------------------------------------------------
 // Packets equal scalars, bit for bit.

@@ -2,13 +2,11 @@
 //! references, the χ² harness on correct samplers (positive controls) and broken ones (negative
 //! controls), and the lane-equality check.
 
-mod common;
-
 use std::f32::consts::PI as PI32;
 use std::f64::consts::PI;
 use std::time::Instant;
 
-use common::TestRng;
+use crate::common::TestRng;
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use mcsample::verify::{
     ChiSquare, ChiSquareResult, check_lanes, chi2_sf, gamma_p, gamma_q, ln_gamma, sidak_alpha,

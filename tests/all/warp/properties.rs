@@ -7,9 +7,7 @@
 //! Tolerances: |p| ≤ 1 + 1e-6 on disks, | |w| − 1 | ≤ 1e-6 for directions, barycentric sums
 //! within 1e-6 of 1, z ≥ 1 − h − 1e-6 in a cone.
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use glam::{Vec2, Vec3};
 use mcsample::warp::{self, ONE_MINUS_EPS};
 use proptest::prelude::*;

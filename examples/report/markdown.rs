@@ -26,6 +26,18 @@ fn commit() -> String {
     if clean { hash } else { format!("{hash}-dirty") }
 }
 
+/// "rustc 1.95.0": the version alone, without the toolchain's build date, so that the file holds
+/// no dates.
+fn rustc_version() -> String {
+    let v = output("rustc", &["--version"]).unwrap_or_default();
+    let words: Vec<&str> = v.split_whitespace().take(2).collect();
+    if words.len() == 2 {
+        words.join(" ")
+    } else {
+        "rustc, version unknown".into()
+    }
+}
+
 /// The file's head. Taken when the run starts, before the work tree can change under it.
 pub fn head() -> String {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -46,7 +58,7 @@ pub fn head() -> String {
         crate::target_features().join(", "),
         yes(cfg!(target_feature = "avx2")),
         yes(cfg!(target_feature = "fma")),
-        output("rustc", &["--version"]).unwrap_or_else(|| "rustc, version unknown".into()),
+        rustc_version(),
         commit(),
     )
 }

@@ -240,7 +240,7 @@ fn random_points(c: &mut Criterion) {
                     let u = Vec2x8::new(x, rng.next_f32x8());
                     for (d, w) in o
                         .iter_mut()
-                        .zip(mcsample::warp::x8::uniform_sphere(u).to_array())
+                        .zip(mcsample::warp::uniform_sphere(u).to_array())
                     {
                         *d = w.to_array();
                     }

@@ -16,7 +16,7 @@
 //!   iteration, so they are run-time values; results are summed as integer bits.
 //! - `sobol_vs_burley`: four Sobol dimensions of 1024 indices (4096 values) from
 //!   `sobol_burley::sample_4d` and `sobol_burley::sample`, against `mcsample::seq::sobol`
-//!   scalar and `seq::x8::sobol` (dimensions 0..4 of 128 packets).
+//!   scalar and `seq::sobol` (dimensions 0..4 of 128 packets).
 //!
 //! `cargo bench --bench sequences`; for the AVX2 build,
 //! `RUSTFLAGS="-C target-feature=+avx2,+fma" cargo bench --target-dir target/avx2 --bench sequences`.
@@ -264,21 +264,21 @@ fn sequences(c: &mut Criterion) {
         seq::independent(i, p.dim, p.seed)
     });
     bench_x8_1d(&mut g, "independent", p, |i, p| {
-        seq::x8::independent(i, p.dim, p.seed)
+        seq::independent(i, p.dim, p.seed)
     });
 
     bench_scalar_1d(&mut g, "stratified", p, |i, p| {
         seq::stratified(i, p.count, p.dim, p.seed)
     });
     bench_x8_1d(&mut g, "stratified", p, |i, p| {
-        seq::x8::stratified(i, p.count, p.dim, p.seed)
+        seq::stratified(i, p.count, p.dim, p.seed)
     });
 
     bench_scalar_1d(&mut g, "latin_hypercube", p1, |i, p| {
         seq::latin_hypercube(i, p.count, p.dim, p.seed)
     });
     bench_x8_1d(&mut g, "latin_hypercube", p1, |i, p| {
-        seq::x8::latin_hypercube(i, p.count, p.dim, p.seed)
+        seq::latin_hypercube(i, p.count, p.dim, p.seed)
     });
 
     // A count that is not a power of two: `permute` cycle-walks (2¹² slots for 3000 strata), and
@@ -291,21 +291,21 @@ fn sequences(c: &mut Criterion) {
         seq::stratified(i, p.count, p.dim, p.seed)
     });
     bench_x8_1d(&mut g, "stratified_n3000", p3000, |i, p| {
-        seq::x8::stratified(i, p.count, p.dim, p.seed)
+        seq::stratified(i, p.count, p.dim, p.seed)
     });
 
     bench_scalar_2d(&mut g, "jittered_2d", p, |i, p| {
         seq::jittered_2d(i, p.nx, p.ny, p.dim, p.seed)
     });
     bench_x8_2d(&mut g, "jittered_2d", p, |i, p| {
-        seq::x8::jittered_2d(i, p.nx, p.ny, p.dim, p.seed)
+        seq::jittered_2d(i, p.nx, p.ny, p.dim, p.seed)
     });
 
     bench_scalar_2d(&mut g, "multi_jittered_2d", p, |i, p| {
         seq::multi_jittered_2d(i, p.nx, p.ny, p.dim, p.seed)
     });
     bench_x8_2d(&mut g, "multi_jittered_2d", p, |i, p| {
-        seq::x8::multi_jittered_2d(i, p.nx, p.ny, p.dim, p.seed)
+        seq::multi_jittered_2d(i, p.nx, p.ny, p.dim, p.seed)
     });
 
     // A 48 × 48 grid: 2304 cells in 2¹² slots and 48 rows/columns in 2⁶, all cycle-walked.
@@ -318,38 +318,36 @@ fn sequences(c: &mut Criterion) {
         seq::multi_jittered_2d(i, p.nx, p.ny, p.dim, p.seed)
     });
     bench_x8_2d(&mut g, "multi_jittered_2d_48x48", p48, |i, p| {
-        seq::x8::multi_jittered_2d(i, p.nx, p.ny, p.dim, p.seed)
+        seq::multi_jittered_2d(i, p.nx, p.ny, p.dim, p.seed)
     });
 
     bench_scalar_2d(&mut g, "cmj_2d", p, |i, p| {
         seq::cmj_2d(i, p.nx, p.ny, p.dim, p.seed)
     });
     bench_x8_2d(&mut g, "cmj_2d", p, |i, p| {
-        seq::x8::cmj_2d(i, p.nx, p.ny, p.dim, p.seed)
+        seq::cmj_2d(i, p.nx, p.ny, p.dim, p.seed)
     });
 
     // Dimension 2 runs the 32-column matrix loop (as does 3); dimension 0 (van der Corput) and 1
     // (Pascal, five shift steps) skip it.
     let p2 = Params { dim: 2, ..PARAMS };
     bench_scalar_1d(&mut g, "sobol", p2, |i, p| seq::sobol(i, p.dim, p.seed));
-    bench_x8_1d(&mut g, "sobol", p2, |i, p| seq::x8::sobol(i, p.dim, p.seed));
+    bench_x8_1d(&mut g, "sobol", p2, |i, p| seq::sobol(i, p.dim, p.seed));
     bench_scalar_1d(&mut g, "sobol_dim1", p1, |i, p| {
         seq::sobol(i, p.dim, p.seed)
     });
     bench_x8_1d(&mut g, "sobol_dim1", p1, |i, p| {
-        seq::x8::sobol(i, p.dim, p.seed)
+        seq::sobol(i, p.dim, p.seed)
     });
     bench_scalar_1d(&mut g, "sobol_dim0", p, |i, p| seq::sobol(i, p.dim, p.seed));
-    bench_x8_1d(&mut g, "sobol_dim0", p, |i, p| {
-        seq::x8::sobol(i, p.dim, p.seed)
-    });
+    bench_x8_1d(&mut g, "sobol_dim0", p, |i, p| seq::sobol(i, p.dim, p.seed));
 
     // Pair 0: dimensions 0 and 1, the (0, m, 2)-net.
     bench_scalar_2d(&mut g, "sobol_2d", p, |i, p| {
         seq::sobol_2d(i, p.dim, p.seed)
     });
     bench_x8_2d(&mut g, "sobol_2d", p, |i, p| {
-        seq::x8::sobol_2d(i, p.dim, p.seed)
+        seq::sobol_2d(i, p.dim, p.seed)
     });
 
     g.finish();
@@ -410,7 +408,7 @@ fn sobol_vs_burley(c: &mut Criterion) {
             for k in 0..POINTS / 8 {
                 let index = U32x8::splat(k * 8) + lanes;
                 for d in 0..4 {
-                    acc += bits8(seq::x8::sobol(index, d, seed));
+                    acc += bits8(seq::sobol(index, d, seed));
                 }
             }
             black_box(acc)

@@ -9,15 +9,15 @@
 //! shading point with two samples of its strategy (one light and one BSDF sample for MIS).
 //!
 //! The ray caster for plates and spheres lives here, not in the library. Camera samples come
-//! from `seq::x8::CameraSample` and shading from `mcsample::direct` through its packet path:
+//! from `camera::CameraSample` and shading from `mcsample::direct` through its packet path:
 //! the eight samples of a pixel are eight lanes.
 
 use std::time::Instant;
 
 use glam::{Vec2, Vec3};
+use mcsample::camera::{CameraSample, PixelFilter};
 use mcsample::direct::{self, Config, Generator, Lights, Sequence, ShadingPoint, Strategy};
 use mcsample::scene::{Light, Phong, SphereLight};
-use mcsample::seq::{PixelFilter, x8::CameraSample};
 use mcsample::x8::{F32x8, U32x8, Vec3x8};
 
 /// A plate: the parallelogram corner + s·ex + t·ey, s, t ∈ [0, 1], facing `n`, with its

@@ -4,7 +4,7 @@
 //! This module stands on [`seq`](crate::seq) and [`warp`](crate::warp), as pbrt keeps its
 //! camera samples in the sampler layer above both. [`CameraSample`] is written once over the
 //! index lane: `CameraSample<u32>` (the default) is one sample, `CameraSample<U32x8>`
-//! ([`x8::CameraSample`]) eight.
+//! eight.
 
 use crate::lane::{U32Lane, V2};
 use crate::math::Math;
@@ -46,7 +46,7 @@ fn shutter_terms(open: f32, close: f32) -> (f32, f32, f32) {
 
 /// One sample of the 5D integral of a pixel (Pharr, CS348b "Monte Carlo II"): a film position,
 /// a lens position and a time, for one index (`I = u32`, the default) or eight
-/// (`I = U32x8`, [`x8::CameraSample`]).
+/// (`I = U32x8`).
 ///
 /// [`CameraSample::generate`] draws them from three padded Owen-scrambled Sobol pairs keyed by
 /// (pixel, seed): film from one pair, lens from another, time from the first dimension of a
@@ -111,11 +111,4 @@ impl<I: U32Lane<F = L>, L: Math> CameraSample<I> {
             time,
         }
     }
-}
-
-/// The packet path: [`x8::CameraSample`] is `CameraSample<U32x8>`.
-pub mod x8 {
-    /// [`CameraSample`](super::CameraSample) for 8 indices of one pixel: lane *i* equals the
-    /// scalar sample of `index[i]`, bit for bit.
-    pub type CameraSample = super::CameraSample<crate::x8::U32x8>;
 }

@@ -79,11 +79,6 @@ use crate::warp::{
 };
 use crate::x8::{Vec2x8, Vec3x8};
 
-/// The packet path: the same generic [`estimate`], for callers who name the width.
-pub mod x8 {
-    pub use super::{Config, Estimate, Lights, Sequence, ShadingPoint, Strategy, estimate};
-}
-
 /// How many lights of the slice stay prepared for a whole estimate.
 pub const PREPARED_LIGHTS: usize = 8;
 
@@ -975,7 +970,7 @@ fn hemisphere<L: Math>(strategy: Strategy, u: V2<L>) -> (V3<L>, L) {
         }
         _ => {
             let w: V3<L> = cosine_hemisphere(u);
-            (w, L::ONE / cosine_hemisphere_pdf(w.z))
+            (w, L::ONE / cosine_hemisphere_pdf(w))
         }
     }
 }

@@ -13,7 +13,7 @@
 //!
 //! let mut rng = rand_pcg::Pcg32::new(7, 11);
 //! let w: glam::Vec3 = rng.sample(CosineHemisphere);
-//! assert!(w.z >= 0.0 && warp::cosine_hemisphere_pdf(w.z) > 0.0);
+//! assert!(w.z >= 0.0 && warp::cosine_hemisphere_pdf(w) > 0.0);
 //! let v: glam::Vec3 = rng.sample(UniformCone { h: 0.1 });
 //! assert!(warp::uniform_cone_pdf(v, 0.1) > 0.0);
 //! ```

@@ -7,7 +7,7 @@
 //! original form is off by 0.54. The frame is right-handed: t × b' = n.
 //!
 //! One [`Frame`] type serves every width: `Frame<Vec3>` (the default), `Frame<Vec3x8>` (eight
-//! frames, also named [`x8::Frame`]) and `Frame<DVec3>`, as the type of the normal picks.
+//! frames) and `Frame<DVec3>`, as the type of the normal picks.
 //!
 //! Bad input: `n` is used as given (not normalised). A zero normal gives the frame of +z with
 //! n = 0; NaN components give NaN axes (canonical NaN, the same bits in every width).
@@ -75,11 +75,4 @@ impl<V: Point3<Lane = L>, L: Math> Frame<V> {
             v.to_lanes(),
         )
     }
-}
-
-/// The packet path: [`x8::Frame`] is `Frame<Vec3x8>`, eight frames, one per lane.
-pub mod x8 {
-    /// Eight right-handed orthonormal frames: lane *i* is the frame of lane *i*'s normal, bit for
-    /// bit.
-    pub type Frame = super::Frame<crate::x8::Vec3x8>;
 }

@@ -22,15 +22,11 @@
 //! | 3 | [`warp`] | square → disk, hemisphere, sphere, cone, Phong lobe, triangle, spherical triangle and rectangle, tent | lane, math, point |
 //! | 4 | [`camera`] | film, lens and time samples of a pixel | seq, warp |
 //! | 4 | `distr` (feature `rand`) | rand's `Distribution` for the warps | warp |
-//! | 4 | `estimate`, `mis` (to come) | accumulators, roulette, splitting; MIS weights | lane only |
-//! | 4 | `reference` (to come) | analytic f64 irradiance references | core and libm only |
+//! | 4 | [`estimate`], [`mis`] | accumulators, roulette, splitting; MIS weights, optimal MIS, the RIS reservoir | lane, math, warp |
+//! | 4 | [`reference`] | analytic f64 irradiance references | core and libm only |
 //! | 5 | [`scene`] | sphere, disk, triangle and rectangle lights, light selection, Lambert and modified Phong BSDFs | lane, math, point, frame, warp |
-//! | 6 | `direct` (to come) | the direct-lighting estimator | scene, mis, estimate, seq |
-//! | — | [`verify`] | (std) χ² goodness of fit and the packet-vs-scalar lane check | anything below |
-//!
-//! One deliberate exception: `seq` re-exports [`CameraSample`](camera::CameraSample) and
-//! [`PixelFilter`](camera::PixelFilter) from `camera`, because callers know them by the path
-//! `mcsample::seq::CameraSample`.
+//! | 6 | [`direct`] | the direct-lighting estimator and its strategies | every floor below |
+//! | — | [`verify`] | (std) χ² goodness of fit, the packet-vs-scalar lane check, the sampler registry and the direct-lighting test scenes | anything below |
 //!
 //! # One source, every width
 //!
@@ -40,8 +36,7 @@
 //! `warp::cosine_hemisphere(Vec2x8) -> Vec3x8`, and `warp::cosine_hemisphere(DVec2) -> DVec3`,
 //! the f64 reference whose transcendental functions come from libm and against which the report
 //! measures f32 error. Sequence generators do the same over the index lane (`u32` or `U32x8`).
-//! The `x8` modules (`warp::x8`, `seq::x8`, `frame::x8`, `camera::x8`) name the same functions
-//! and types under the packet path.
+//! [`x8`] holds the packet types only; there is no second path to the functions.
 //!
 //! Lane *i* of a packet result equals the scalar result on lane *i*'s input, bit for bit, in any
 //! one build: the operations the lanes use are correctly rounded or exact, FMA is fused in both

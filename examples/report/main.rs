@@ -324,7 +324,7 @@ fn streaming(cfg: &Config) -> (f64, f64) {
         tc.push(t.elapsed().as_secs_f64());
         let t = Instant::now();
         for (o, &u) in out8.iter_mut().zip(black_box(&packets)) {
-            *o = warp::x8::cosine_hemisphere(u);
+            *o = warp::cosine_hemisphere(u);
         }
         black_box(&out8);
         tw.push(t.elapsed().as_secs_f64());

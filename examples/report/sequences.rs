@@ -6,8 +6,9 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use glam::Vec2;
+use mcsample::camera::{CameraSample, PixelFilter};
 use mcsample::rng::Pcg32x8;
-use mcsample::seq::{self, CameraSample, PixelFilter, quality};
+use mcsample::seq::{self, quality};
 use mcsample::x8::{F32x8, U32x8};
 use rand_core::Rng;
 use rand_pcg::Pcg32;
@@ -101,7 +102,7 @@ fn generators() -> Vec<Generator> {
             },
             packet: |out| {
                 for (k, o) in out.iter_mut().enumerate() {
-                    *o = seq::x8::independent(lanes(k), 0, SEED);
+                    *o = seq::independent(lanes(k), 0, SEED);
                 }
             },
         },
@@ -116,7 +117,7 @@ fn generators() -> Vec<Generator> {
             },
             packet: |out| {
                 for (k, o) in out.iter_mut().enumerate() {
-                    *o = seq::x8::stratified(lanes(k), BATCH, 0, SEED);
+                    *o = seq::stratified(lanes(k), BATCH, 0, SEED);
                 }
             },
         },
@@ -136,17 +137,17 @@ fn generators() -> Vec<Generator> {
             },
             packet: |out| {
                 for (k, o) in out.iter_mut().enumerate() {
-                    *o = seq::x8::latin_hypercube(lanes(k), BATCH, 1, SEED);
+                    *o = seq::latin_hypercube(lanes(k), BATCH, 1, SEED);
                 }
             },
         },
-        grid_generator!("jittered_2d", seq::jittered_2d, seq::x8::jittered_2d),
+        grid_generator!("jittered_2d", seq::jittered_2d, seq::jittered_2d),
         grid_generator!(
             "multi_jittered_2d",
             seq::multi_jittered_2d,
-            seq::x8::multi_jittered_2d
+            seq::multi_jittered_2d
         ),
-        grid_generator!("cmj_2d", seq::cmj_2d, seq::x8::cmj_2d),
+        grid_generator!("cmj_2d", seq::cmj_2d, seq::cmj_2d),
         Generator {
             // Dimensions 0–3 in turn, as a 4D consumer reads them: 0 and 1 skip the matrix loop.
             name: "sobol (dims 0-3)",
@@ -162,7 +163,7 @@ fn generators() -> Vec<Generator> {
             packet: |out| {
                 for (k, o) in out.chunks_exact_mut(4).enumerate() {
                     for (d, v) in o.iter_mut().enumerate() {
-                        *v = seq::x8::sobol(lanes(k), d as u32, SEED);
+                        *v = seq::sobol(lanes(k), d as u32, SEED);
                     }
                 }
             },
@@ -179,7 +180,7 @@ fn generators() -> Vec<Generator> {
             },
             packet: |out| {
                 for (k, o) in out.chunks_exact_mut(2).enumerate() {
-                    let p = seq::x8::sobol_2d(lanes(k), 0, SEED);
+                    let p = seq::sobol_2d(lanes(k), 0, SEED);
                     (o[0], o[1]) = (p.x, p.y);
                 }
             },
@@ -199,7 +200,7 @@ fn generators() -> Vec<Generator> {
             },
             packet: |out| {
                 for (k, o) in out.chunks_exact_mut(5).enumerate() {
-                    let c = seq::x8::CameraSample::generate(
+                    let c = CameraSample::<U32x8>::generate(
                         [3, 4],
                         lanes(k),
                         SEED,

@@ -54,7 +54,7 @@ fuzz_target!(|data: &[u8]| {
     assert!(pick.index < 3);
     assert!((0.0..1.0).contains(&pick.u) || (pick.probability == 0.0 && pick.u == x[10]));
     weight("one-sample probability", pick.probability);
-    let packet = mis::x8::one_sample(c.map(F32x8::splat), F32x8::splat(x[10]));
+    let packet = mis::one_sample(c.map(F32x8::splat), F32x8::splat(x[10]));
     assert!(packet.index.to_array().iter().all(|&i| i == pick.index));
     assert!(packet.u.to_array().iter().all(|u| u.to_bits() == pick.u.to_bits()));
 

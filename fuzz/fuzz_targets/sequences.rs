@@ -7,7 +7,8 @@
 
 use glam::Vec2;
 use libfuzzer_sys::fuzz_target;
-use mcsample::seq::{self, CameraSample, PixelFilter};
+use mcsample::camera::{CameraSample, PixelFilter};
+use mcsample::seq;
 use mcsample::x8::U32x8;
 
 fn words(data: &[u8]) -> [u32; 16] {
@@ -30,18 +31,18 @@ fuzz_target!(|data: &[u8]| {
     let pixel = [w[13], w[14]];
     let shutter = (f32::from_bits(w[15]), f32::from_bits(w[15].rotate_left(7)));
 
-    let s = seq::x8::stratified(packet, count, dim, seed).to_array();
-    let l = seq::x8::latin_hypercube(packet, count, dim, seed).to_array();
-    let ind = seq::x8::independent(packet, dim, seed).to_array();
-    let so = seq::x8::sobol(packet, dim, seed).to_array();
+    let s = seq::stratified(packet, count, dim, seed).to_array();
+    let l = seq::latin_hypercube(packet, count, dim, seed).to_array();
+    let ind = seq::independent(packet, dim, seed).to_array();
+    let so = seq::sobol(packet, dim, seed).to_array();
     let pairs: [(&str, [Vec2; 8], fn(u32, u32, u32, u32, u32) -> Vec2); 3] = [
-        ("jittered_2d", seq::x8::jittered_2d(packet, nx, ny, dim, seed).to_array(), seq::jittered_2d),
-        ("multi_jittered_2d", seq::x8::multi_jittered_2d(packet, nx, ny, dim, seed).to_array(), seq::multi_jittered_2d),
-        ("cmj_2d", seq::x8::cmj_2d(packet, nx, ny, dim, seed).to_array(), seq::cmj_2d),
+        ("jittered_2d", seq::jittered_2d(packet, nx, ny, dim, seed).to_array(), seq::jittered_2d),
+        ("multi_jittered_2d", seq::multi_jittered_2d(packet, nx, ny, dim, seed).to_array(), seq::multi_jittered_2d),
+        ("cmj_2d", seq::cmj_2d(packet, nx, ny, dim, seed).to_array(), seq::cmj_2d),
     ];
-    let so2 = seq::x8::sobol_2d(packet, dim, seed).to_array();
+    let so2 = seq::sobol_2d(packet, dim, seed).to_array();
     let filter = if seed & 1 == 0 { PixelFilter::Box } else { PixelFilter::Tent };
-    let cam = seq::x8::CameraSample::generate(pixel, packet, seed, filter, shutter);
+    let cam = CameraSample::<U32x8>::generate(pixel, packet, seed, filter, shutter);
     let (film, lens, time) = (cam.film.to_array(), cam.lens.to_array(), cam.time.to_array());
 
     for (k, &i) in indices.iter().enumerate() {

@@ -67,7 +67,7 @@ impl<V: Point3<Lane = L>, L: Math> Lambert<V> {
     /// cos θ/π above the horizon, 0 at and below it and for NaN. It does not depend on `wo`.
     #[inline]
     pub fn pdf(&self, _wo: V, wi: V) -> L {
-        cosine_hemisphere_pdf(wi.to_lanes().z)
+        cosine_hemisphere_pdf(wi)
     }
 }
 
@@ -167,7 +167,7 @@ impl<V: Point3<Lane = L>, L: Math> Phong<V> {
     #[inline(always)]
     fn pdf_with(&self, wo: V3<L>, wi: V3<L>, lobe: L) -> L {
         let p = self.diffuse_probability();
-        let pdf = p.mul_add(cosine_hemisphere_pdf(wi.z), (L::ONE - p) * lobe);
+        let pdf = p.mul_add(cosine_hemisphere_pdf(wi), (L::ONE - p) * lobe);
         // The diffuse part reads z alone: NaN elsewhere, or in n, must still give 0.
         let ok = pdf.is_finite() & !wi.any_nan() & !wo.any_nan() & !self.n.is_nan();
         L::select(ok, pdf, L::ZERO)

@@ -11,8 +11,7 @@
 //!   one value (`f32`, or [`glam::Vec2`] for the 2D generators), a [`U32x8`](crate::x8::U32x8)
 //!   of indices gives eight ([`F32x8`](crate::x8::F32x8), [`Vec2x8`](crate::x8::Vec2x8)), with
 //!   the same scalar `u32` dimension and seed; lane *i* of the packet result equals the scalar
-//!   result on lane *i*'s index, bit for bit. [`x8`] names the same functions under the packet
-//!   path.
+//!   result on lane *i*'s index, bit for bit.
 //!
 //! # Generators
 //!
@@ -56,17 +55,3 @@ pub use sobol::{sobol, sobol_2d};
 pub use stratify::{
     MAX_STRATA, cmj_2d, jittered_2d, latin_hypercube, multi_jittered_2d, stratified,
 };
-
-// Camera samples live in [`crate::camera`], above this module and the warps; these names stay
-// reachable here because callers know them by this path.
-pub use crate::camera::{CameraSample, PixelFilter};
-
-/// The packet path: the same generic functions as [`crate::seq`], for callers who name the width
-/// in the path (`seq::x8::sobol(U32x8, dim, seed)`), and [`x8::CameraSample`].
-pub mod x8 {
-    pub use super::{
-        cmj_2d, hash3, independent, jittered_2d, latin_hypercube, multi_jittered_2d, sobol,
-        sobol_2d, stratified,
-    };
-    pub use crate::camera::x8::CameraSample;
-}

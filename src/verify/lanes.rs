@@ -171,7 +171,7 @@ impl std::error::Error for LaneMismatch {}
 /// contract is bit equality, and its packet and scalar forms run the same operations).
 ///
 /// The scalar inputs fix the types, so the crate's generic functions can be passed as they are:
-/// `check_lanes(&us, warp::x8::concentric_disk, warp::concentric_disk)`. Several arguments or
+/// `check_lanes(&us, warp::concentric_disk, warp::concentric_disk)`. Several arguments or
 /// results: use tuples, e.g. scalar input `(Vec2, f32)` and packet input `(Vec2x8, F32x8)`.
 ///
 /// Returns the number of lanes compared (the number of inputs rounded up to a multiple of 8), or

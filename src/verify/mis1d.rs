@@ -16,13 +16,13 @@ pub type HeuristicX8 = fn(F32x8, F32x8, F32x8, F32x8) -> F32x8;
 /// Every two-technique heuristic of [`mis`] in both widths, the cutoff at α = 0.1: what the
 /// report, the benches and the fuzz target iterate.
 pub const HEURISTICS: [(&str, Heuristic, HeuristicX8); 4] = [
-    ("balance", mis::balance, mis::x8::balance),
-    ("power", mis::power, mis::x8::power),
-    ("maximum", mis::maximum, mis::x8::maximum),
+    ("balance", mis::balance, mis::balance),
+    ("power", mis::power, mis::power),
+    ("maximum", mis::maximum, mis::maximum),
     (
         "cutoff",
         |a, b, c, d| mis::cutoff(a, b, c, d, 0.1),
-        |a, b, c, d| mis::x8::cutoff(a, b, c, d, F32x8::splat(0.1)),
+        |a, b, c, d| mis::cutoff(a, b, c, d, F32x8::splat(0.1)),
     ),
 ];
 

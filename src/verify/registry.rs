@@ -555,7 +555,7 @@ impl Sampler {
                 #[inline(always)]
                 |u| {
                     let w = warp::cosine_hemisphere(u);
-                    (w, warp::cosine_hemisphere_pdf(w.z))
+                    (w, warp::cosine_hemisphere_pdf(w))
                 },
             ),
             Sampler::UniformSphere => visit.visit(
@@ -581,7 +581,7 @@ impl Sampler {
                     #[inline(always)]
                     move |u| {
                         let w = warp::phong_lobe(u, n);
-                        (w, warp::phong_lobe_pdf(w.z, n))
+                        (w, warp::phong_lobe_pdf(w, n))
                     },
                 )
             }
@@ -589,7 +589,7 @@ impl Sampler {
                 #[inline(always)]
                 |u| {
                     let b = warp::uniform_triangle(u);
-                    (b, warp::uniform_triangle_pdf(V2::new(b.x, b.y)))
+                    (b, warp::uniform_triangle_pdf(b))
                 },
             ),
             Sampler::Tent => visit.visit(
@@ -684,11 +684,11 @@ impl Sampler {
                 L::select(inside, warp::uniform_disk_pdf(V2::new(x.x, x.y)), L::ZERO)
             }
             Sampler::UniformHemisphere => warp::uniform_hemisphere_pdf(x),
-            Sampler::CosineHemisphere => warp::cosine_hemisphere_pdf(x.z),
+            Sampler::CosineHemisphere => warp::cosine_hemisphere_pdf(x),
             Sampler::UniformSphere => warp::uniform_sphere_pdf(x),
             Sampler::UniformCone { h } => warp::uniform_cone_pdf(x, Self::param(h)),
-            Sampler::PhongLobe { n } => warp::phong_lobe_pdf(x.z, Self::param(n)),
-            Sampler::UniformTriangle => warp::uniform_triangle_pdf(V2::new(x.x, x.y)),
+            Sampler::PhongLobe { n } => warp::phong_lobe_pdf(x, Self::param(n)),
+            Sampler::UniformTriangle => warp::uniform_triangle_pdf(x),
             Sampler::Tent => warp::tent_pdf(x.x) * warp::tent_pdf(x.y),
             Sampler::SphericalTriangle { v } => {
                 let [a, b, c] = Self::verts(&v);

@@ -52,14 +52,16 @@ pub fn cosine_hemisphere<P: Point2<Lane = L>, L: Math>(u: P) -> P::Vec3 {
     Point3::from_lanes(V3::new(p.x, p.y, z).nan_if(u.any_nan()))
 }
 
-/// pdf per steradian of [`cosine_hemisphere`]: cos θ/π for cos θ > 0, else 0 (the rim, below it,
-/// and NaN). cos θ decides the support, so it is all the pdf needs to see. cos θ above 1, from a
-/// vector that is not unit, counts as 1, as for [`phong_lobe_pdf`](crate::warp::phong_lobe_pdf)
-/// (+∞ gave an infinite pdf; found by the `warps` fuzz target).
+/// pdf per steradian of [`cosine_hemisphere`] at direction `w`: cos θ/π = w.z/π for w.z > 0,
+/// else 0 (the rim, below it, and NaN in any component). w.z above 1, from a vector that is not
+/// unit, counts as 1, as for [`phong_lobe_pdf`](crate::warp::phong_lobe_pdf), so +∞ gives a
+/// finite pdf.
 #[inline(always)]
-pub fn cosine_hemisphere_pdf<L: Math>(cos_theta: L) -> L {
+pub fn cosine_hemisphere_pdf<P: Point3<Lane = L>, L: Math>(w: P) -> L {
+    let w = w.to_lanes();
+    let cos_theta = w.z;
     L::select(
-        cos_theta.gt(L::ZERO),
+        cos_theta.gt(L::ZERO) & !w.any_nan(),
         cos_theta.min(L::ONE) * L::c(core::f64::consts::FRAC_1_PI),
         L::ZERO,
     )

@@ -21,8 +21,6 @@
 //! assert!(warp::uniform_cone_pdf(w, 0.1) > 0.0);
 //! ```
 //!
-//! [`x8`] names the same functions under the packet path, `warp::x8::uniform_cone(Vec2x8, F32x8)`.
-//!
 //! The warps of the disk, hemisphere, sphere, cone, lobe, triangle and tent are always inlined,
 //! as their bodies were before they became the public face: they are a few dozen instructions,
 //! and a caller that composes several (a camera sample draws a disk and two tents) would
@@ -86,10 +84,3 @@ pub use tent::{tent, tent_inverse, tent_pdf};
 #[cfg(feature = "std")]
 pub(crate) use tent::tent_uncanonical;
 pub use triangle::{uniform_triangle, uniform_triangle_inverse, uniform_triangle_pdf};
-
-/// The packet path: the same generic functions as [`crate::warp`], for callers who name the
-/// width in the path (`warp::x8::cosine_hemisphere(Vec2x8)`). Nothing here is a second
-/// implementation.
-pub mod x8 {
-    pub use super::*;
-}

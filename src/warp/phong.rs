@@ -33,15 +33,18 @@ pub fn phong_lobe<P: Point2<Lane = L>, L: Math>(u: P, n: L) -> P::Vec3 {
     Point3::from_lanes(w.nan_where(u.any_nan() | n.is_nan()))
 }
 
-/// pdf per steradian of [`phong_lobe`]: (n+1)/(2π)·exp(n·ln cos α) for cos α > 0, else 0.
+/// pdf per steradian of [`phong_lobe`] at direction `w` of the lobe's frame (+z the lobe's
+/// axis): (n+1)/(2π)·exp(n·ln cos α) with cos α = w.z, for cos α > 0, else 0.
 ///
-/// cos α decides the support, so it is all the pdf needs to see. The horizon is outside the
-/// support, which makes n = 0 agree with the open hemisphere. NaN gives 0. cos α above 1, which
-/// rounding can produce from a slightly long vector, counts as 1.
+/// The horizon is outside the support, which makes n = 0 agree with the open hemisphere. NaN in
+/// `w` or `n` gives 0. cos α above 1, which rounding can produce from a slightly long vector,
+/// counts as 1.
 #[inline(always)]
-pub fn phong_lobe_pdf<L: Math>(cos_alpha: L, n: L) -> L {
+pub fn phong_lobe_pdf<P: Point3<Lane = L>, L: Math>(w: P, n: L) -> L {
+    let w = w.to_lanes();
+    let cos_alpha = w.z;
     let p = phong_lobe_density(cos_alpha.min(L::ONE).ln(), n);
-    L::select(cos_alpha.gt(L::ZERO) & n.eq(n), p, L::ZERO)
+    L::select(cos_alpha.gt(L::ZERO) & n.eq(n) & !w.any_nan(), p, L::ZERO)
 }
 
 /// (n+1)/(2π)·exp(n·ln cos α) from ln cos α, n clamped: the one formula of the lobe's density,

@@ -6,7 +6,7 @@ use crate::point::{Point2, Point3};
 use crate::warp::common::clamp_u;
 
 /// Square → barycentrics (b₀, b₁, b₂) of a uniform point in a triangle, by Heitz's
-/// low-distortion map (2019); the density over (b₀, b₁) is [`uniform_triangle_pdf`].
+/// low-distortion map (2019), with density [`uniform_triangle_pdf`].
 ///
 /// If u₀ < u₁: b₀ = u₀/2, b₁ = u₁ − b₀; otherwise b₁ = u₁/2, b₀ = u₀ − b₁. No square root, and
 /// neighbouring u stay neighbours. b₂ is written as 1 − max(u₀, u₁), which is what 1 − b₀ − b₁ is
@@ -47,12 +47,12 @@ pub fn uniform_triangle_inverse<P: Point3<Lane = L>, L: Math>(b: P) -> P::Vec2 {
     Point2::from_lanes(clamp_u(u).nan_where(b.any_nan()))
 }
 
-/// Density of the barycentrics (b₀, b₁) from [`uniform_triangle`] over the unit square: 2 inside
-/// the triangle b₀, b₁ ≥ 0, b₀ + b₁ ≤ 1, else 0 (also for NaN). Per unit area of a real
-/// triangle, the pdf is 1/area.
+/// Density of the barycentrics b = (b₀, b₁, b₂) from [`uniform_triangle`], over (b₀, b₁) in the
+/// unit square: 2 inside the triangle (b₀, b₁, b₂ ≥ 0, b₀ + b₁ ≤ 1), else 0 (also for NaN). Per
+/// unit area of a real triangle, the pdf is 1/area.
 #[inline(always)]
-pub fn uniform_triangle_pdf<P: Point2<Lane = L>, L: Math>(b: P) -> L {
+pub fn uniform_triangle_pdf<P: Point3<Lane = L>, L: Math>(b: P) -> L {
     let b = b.to_lanes();
-    let inside = b.x.ge(L::ZERO) & b.y.ge(L::ZERO) & (b.x + b.y).le(L::ONE);
+    let inside = b.x.ge(L::ZERO) & b.y.ge(L::ZERO) & b.z.ge(L::ZERO) & (b.x + b.y).le(L::ONE);
     L::select(inside, L::TWO, L::ZERO)
 }

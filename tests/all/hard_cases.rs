@@ -255,42 +255,42 @@ fn warps() -> Vec<Warp> {
         warp_case(
             "concentric_disk",
             warp::concentric_disk,
-            warp::x8::concentric_disk,
+            warp::concentric_disk,
             disk_domain(),
             None,
         ),
         warp_case(
             "polar_disk",
             warp::polar_disk,
-            warp::x8::polar_disk,
+            warp::polar_disk,
             disk_domain(),
             None,
         ),
         warp_case(
             "uniform_hemisphere",
             warp::uniform_hemisphere,
-            warp::x8::uniform_hemisphere,
+            warp::uniform_hemisphere,
             dir_domain(0.0),
             None,
         ),
         warp_case(
             "cosine_hemisphere",
             warp::cosine_hemisphere,
-            warp::x8::cosine_hemisphere,
+            warp::cosine_hemisphere,
             dir_domain(0.0),
             None,
         ),
         warp_case(
             "uniform_sphere",
             warp::uniform_sphere,
-            warp::x8::uniform_sphere,
+            warp::uniform_sphere,
             dir_domain(-1.0),
             None,
         ),
         warp_case(
             "uniform_triangle",
             warp::uniform_triangle,
-            warp::x8::uniform_triangle,
+            warp::uniform_triangle,
             Box::new(|b| {
                 finite("uniform_triangle", b)?;
                 let sum = b[0] as f64 + b[1] as f64 + b[2] as f64;
@@ -305,7 +305,7 @@ fn warps() -> Vec<Warp> {
         warp_case(
             "tent(u.x)",
             |u: Vec2| warp::tent(u.x),
-            |u: Vec2x8| warp::x8::tent(u.x),
+            |u: Vec2x8| warp::tent(u.x),
             Box::new(|x| {
                 if (-1.0..=1.0).contains(&x[0]) {
                     Ok(())
@@ -320,7 +320,7 @@ fn warps() -> Vec<Warp> {
         w.push(warp_case(
             format!("uniform_cone h={h}"),
             move |u| warp::uniform_cone(u, h),
-            move |u| warp::x8::uniform_cone(u, s1(h)),
+            move |u| warp::uniform_cone(u, s1(h)),
             dir_domain(1.0 - h as f64 - 1e-6),
             None,
         ));
@@ -329,7 +329,7 @@ fn warps() -> Vec<Warp> {
         w.push(warp_case(
             format!("phong_lobe n={n}"),
             move |u| warp::phong_lobe(u, n),
-            move |u| warp::x8::phong_lobe(u, s1(n)),
+            move |u| warp::phong_lobe(u, s1(n)),
             dir_domain(0.0),
             None,
         ));
@@ -343,7 +343,7 @@ fn warps() -> Vec<Warp> {
         w.push(warp_case(
             format!("spherical_triangle {label}"),
             move |u| warp::spherical_triangle(u, a, b, c),
-            move |u| warp::x8::spherical_triangle(u, s3(a), s3(b), s3(c)),
+            move |u| warp::spherical_triangle(u, s3(a), s3(b), s3(c)),
             sph_tri_domain(a, b, c),
             Some(Vec3::Z),
         ));
@@ -357,7 +357,7 @@ fn warps() -> Vec<Warp> {
         w.push(warp_case(
             format!("spherical_rectangle {label}"),
             move |u| warp::spherical_rectangle(u, c, ex, ey),
-            move |u| warp::x8::spherical_rectangle(u, s3(c), s3(ex), s3(ey)),
+            move |u| warp::spherical_rectangle(u, s3(c), s3(ex), s3(ey)),
             sph_rect_domain(c, ex, ey),
             Some(c),
         ));
@@ -430,72 +430,77 @@ fn funs() -> Vec<Fun> {
     let wn8 = |x: F32x8| Vec3x8::new(x, x, x);
     let pn = |x: f32| Vec2::new(x, x);
     let pn8 = |x: F32x8| Vec2x8::new(x, x);
+    // Barycentrics (x, x, 1 − 2x), and directions (0, 0, x): the pdfs' arguments from one lane.
+    let bn = |x: f32| Vec3::new(x, x, 1.0 - x - x);
+    let bn8 = |x: F32x8| Vec3x8::new(x, x, s1(1.0) - x - x);
+    let zd = |x: f32| Vec3::new(0.0, 0.0, x);
+    let zd8 = |x: F32x8| Vec3x8::new(s1(0.0), s1(0.0), x);
     vec![
         fun_case(
             "cosine_hemisphere_pdf",
-            warp::cosine_hemisphere_pdf,
-            warp::x8::cosine_hemisphere_pdf,
+            move |x| warp::cosine_hemisphere_pdf(zd(x)),
+            move |x| warp::cosine_hemisphere_pdf(zd8(x)),
             is_zero("cosine_hemisphere_pdf"),
         ),
         fun_case(
             "uniform_cone_pdf(h)",
             |x| warp::uniform_cone_pdf(Vec3::Z, x),
-            |x| warp::x8::uniform_cone_pdf(Vec3x8::splat(Vec3::Z), x),
+            |x| warp::uniform_cone_pdf(Vec3x8::splat(Vec3::Z), x),
             is_zero("uniform_cone_pdf"),
         ),
         fun_case(
             "phong_lobe_pdf(cos, 20)",
-            |x| warp::phong_lobe_pdf(x, 20.0),
-            |x| warp::x8::phong_lobe_pdf(x, s1(20.0)),
+            move |x| warp::phong_lobe_pdf(zd(x), 20.0),
+            move |x| warp::phong_lobe_pdf(zd8(x), s1(20.0)),
             is_zero("phong_lobe_pdf(NaN, n)"),
         ),
         fun_case(
             "phong_lobe_pdf(0.5, n)",
-            |x| warp::phong_lobe_pdf(0.5, x),
-            |x| warp::x8::phong_lobe_pdf(s1(0.5), x),
+            move |x| warp::phong_lobe_pdf(zd(0.5), x),
+            move |x| warp::phong_lobe_pdf(zd8(s1(0.5)), x),
             is_zero("phong_lobe_pdf(cos, NaN)"),
         ),
         fun_case(
             "tent_pdf",
             warp::tent_pdf,
-            warp::x8::tent_pdf,
+            warp::tent_pdf,
             is_zero("tent_pdf"),
         ),
         fun_case(
             "tent_inverse",
             warp::tent_inverse,
-            warp::x8::tent_inverse,
+            warp::tent_inverse,
             any(),
         ),
         fun_case(
             "uniform_triangle_pdf(b, b)",
-            move |x| warp::uniform_triangle_pdf(pn(x)),
-            move |x| warp::x8::uniform_triangle_pdf(pn8(x)),
+            move |x| warp::uniform_triangle_pdf(bn(x)),
+            move |x| warp::uniform_triangle_pdf(bn8(x)),
             is_zero("uniform_triangle_pdf"),
         ),
         fun_case(
             "uniform_triangle_pdf(b, 0.2)",
-            |x| warp::uniform_triangle_pdf(Vec2::new(x, 0.2)),
-            |x| warp::x8::uniform_triangle_pdf(Vec2x8::new(x, s1(0.2))),
+            |x| warp::uniform_triangle_pdf(Vec3::new(x, 0.2, 0.8 - x)),
+            |x| warp::uniform_triangle_pdf(Vec3x8::new(x, s1(0.2), s1(0.8) - x)),
             is_zero("uniform_triangle_pdf"),
         ),
         fun_case(
             "spherical_triangle_pdf(w)",
             move |x| warp::spherical_triangle_pdf(wn(x), t[0], t[1], t[2]),
-            move |x| warp::x8::spherical_triangle_pdf(wn8(x), s3(t[0]), s3(t[1]), s3(t[2])),
+            move |x| warp::spherical_triangle_pdf(wn8(x), s3(t[0]), s3(t[1]), s3(t[2])),
             is_zero("spherical_triangle_pdf"),
         ),
         fun_case(
             "spherical_triangle_pdf(vertex a)",
             move |x| warp::spherical_triangle_pdf(Vec3::Z, wn(x), t[1], t[2]),
-            move |x| warp::x8::spherical_triangle_pdf(s3(Vec3::Z), wn8(x), s3(t[1]), s3(t[2])),
+            move |x| warp::spherical_triangle_pdf(s3(Vec3::Z), wn8(x), s3(t[1]), s3(t[2])),
             is_zero("spherical_triangle_pdf"),
         ),
         fun_case(
             "spherical_triangle(vertex c)",
             move |x| warp::spherical_triangle(Vec2::splat(0.3), t[0], t[1], wn(x)),
             move |x| {
-                warp::x8::spherical_triangle(
+                warp::spherical_triangle(
                     Vec2x8::splat(Vec2::splat(0.3)),
                     s3(t[0]),
                     s3(t[1]),
@@ -507,20 +512,20 @@ fn funs() -> Vec<Fun> {
         fun_case(
             "spherical_triangle_inverse(w)",
             move |x| warp::spherical_triangle_inverse(wn(x), t[0], t[1], t[2]),
-            move |x| warp::x8::spherical_triangle_inverse(wn8(x), s3(t[0]), s3(t[1]), s3(t[2])),
+            move |x| warp::spherical_triangle_inverse(wn8(x), s3(t[0]), s3(t[1]), s3(t[2])),
             any(),
         ),
         fun_case(
             "spherical_rectangle_pdf(w)",
             move |x| warp::spherical_rectangle_pdf(wn(x), r[0], r[1], r[2]),
-            move |x| warp::x8::spherical_rectangle_pdf(wn8(x), s3(r[0]), s3(r[1]), s3(r[2])),
+            move |x| warp::spherical_rectangle_pdf(wn8(x), s3(r[0]), s3(r[1]), s3(r[2])),
             is_zero("spherical_rectangle_pdf"),
         ),
         fun_case(
             "spherical_rectangle(corner)",
             move |x| warp::spherical_rectangle(Vec2::splat(0.3), wn(x), r[1], r[2]),
             move |x| {
-                warp::x8::spherical_rectangle(
+                warp::spherical_rectangle(
                     Vec2x8::splat(Vec2::splat(0.3)),
                     wn8(x),
                     s3(r[1]),
@@ -532,91 +537,91 @@ fn funs() -> Vec<Fun> {
         fun_case(
             "spherical_rectangle_inverse(p)",
             move |x| warp::spherical_rectangle_inverse(wn(x), r[0], r[1], r[2]),
-            move |x| warp::x8::spherical_rectangle_inverse(wn8(x), s3(r[0]), s3(r[1]), s3(r[2])),
+            move |x| warp::spherical_rectangle_inverse(wn8(x), s3(r[0]), s3(r[1]), s3(r[2])),
             any(),
         ),
         fun_case(
             "cone_h_from_sin2",
             warp::cone_h_from_sin2,
-            warp::x8::cone_h_from_sin2,
+            warp::cone_h_from_sin2,
             all_nan("cone_h_from_sin2"),
         ),
         fun_case(
             "cone_h_from_cos",
             warp::cone_h_from_cos,
-            warp::x8::cone_h_from_cos,
+            warp::cone_h_from_cos,
             any(),
         ),
         fun_case(
             "uniform_cone(u, h)",
             |x| warp::uniform_cone(Vec2::splat(0.3), x),
-            |x| warp::x8::uniform_cone(Vec2x8::splat(Vec2::splat(0.3)), x),
+            |x| warp::uniform_cone(Vec2x8::splat(Vec2::splat(0.3)), x),
             any(),
         ),
         fun_case(
             "phong_lobe(u, n)",
             |x| warp::phong_lobe(Vec2::splat(0.3), x),
-            |x| warp::x8::phong_lobe(Vec2x8::splat(Vec2::splat(0.3)), x),
+            |x| warp::phong_lobe(Vec2x8::splat(Vec2::splat(0.3)), x),
             any(),
         ),
         fun_case(
             "concentric_disk_inverse",
             move |x| warp::concentric_disk_inverse(pn(x)),
-            move |x| warp::x8::concentric_disk_inverse(pn8(x)),
+            move |x| warp::concentric_disk_inverse(pn8(x)),
             all_nan("concentric_disk_inverse"),
         ),
         fun_case(
             "polar_disk_inverse",
             move |x| warp::polar_disk_inverse(pn(x)),
-            move |x| warp::x8::polar_disk_inverse(pn8(x)),
+            move |x| warp::polar_disk_inverse(pn8(x)),
             all_nan("polar_disk_inverse"),
         ),
         fun_case(
             "uniform_hemisphere_inverse",
             move |x| warp::uniform_hemisphere_inverse(wn(x)),
-            move |x| warp::x8::uniform_hemisphere_inverse(wn8(x)),
+            move |x| warp::uniform_hemisphere_inverse(wn8(x)),
             any(),
         ),
         fun_case(
             "cosine_hemisphere_inverse",
             move |x| warp::cosine_hemisphere_inverse(wn(x)),
-            move |x| warp::x8::cosine_hemisphere_inverse(wn8(x)),
+            move |x| warp::cosine_hemisphere_inverse(wn8(x)),
             any(),
         ),
         fun_case(
             "uniform_sphere_inverse",
             move |x| warp::uniform_sphere_inverse(wn(x)),
-            move |x| warp::x8::uniform_sphere_inverse(wn8(x)),
+            move |x| warp::uniform_sphere_inverse(wn8(x)),
             any(),
         ),
         fun_case(
             "uniform_cone_inverse(w, 0.3)",
             move |x| warp::uniform_cone_inverse(wn(x), 0.3),
-            move |x| warp::x8::uniform_cone_inverse(wn8(x), s1(0.3)),
+            move |x| warp::uniform_cone_inverse(wn8(x), s1(0.3)),
             any(),
         ),
         fun_case(
             "uniform_cone_inverse(w, h)",
             |x| warp::uniform_cone_inverse(Vec3::new(0.1, 0.2, 0.97), x),
-            |x| warp::x8::uniform_cone_inverse(s3(Vec3::new(0.1, 0.2, 0.97)), x),
+            |x| warp::uniform_cone_inverse(s3(Vec3::new(0.1, 0.2, 0.97)), x),
             any(),
         ),
         fun_case(
             "phong_lobe_inverse(w, 20)",
             move |x| warp::phong_lobe_inverse(wn(x), 20.0),
-            move |x| warp::x8::phong_lobe_inverse(wn8(x), s1(20.0)),
+            move |x| warp::phong_lobe_inverse(wn8(x), s1(20.0)),
             any(),
         ),
         fun_case(
             "phong_lobe_inverse(w, n)",
             |x| warp::phong_lobe_inverse(Vec3::new(0.1, 0.2, 0.97), x),
-            |x| warp::x8::phong_lobe_inverse(s3(Vec3::new(0.1, 0.2, 0.97)), x),
+            |x| warp::phong_lobe_inverse(s3(Vec3::new(0.1, 0.2, 0.97)), x),
             any(),
         ),
         fun_case(
             "uniform_triangle_inverse",
             move |x| warp::uniform_triangle_inverse(wn(x)),
-            move |x| warp::x8::uniform_triangle_inverse(wn8(x)),
+            move |x| warp::uniform_triangle_inverse(wn8(x)),
             any(),
         ),
         fun_case(
@@ -627,7 +632,7 @@ fn funs() -> Vec<Fun> {
                 (f.t, f.b, (f.to_world(v), f.to_local(v)))
             },
             |x| {
-                let f = mcsample::frame::x8::Frame::from_normal(Vec3x8::new(x, s1(0.6), s1(0.8)));
+                let f = mcsample::frame::Frame::from_normal(Vec3x8::new(x, s1(0.6), s1(0.8)));
                 let v = s3(Vec3::new(0.1, 0.2, 0.3));
                 (f.t, f.b, (f.to_world(v), f.to_local(v)))
             },
@@ -786,7 +791,7 @@ hard_case!(
         let h = Vec2::splat(0.5);
         let p = warp::concentric_disk(h);
         let w = warp::cosine_hemisphere(h);
-        let pdf = warp::cosine_hemisphere_pdf(w.z);
+        let pdf = warp::cosine_hemisphere_pdf(w);
         collect([
             check(p.x == 0.0 && p.y == 0.0, || {
                 format!("concentric(½,½) = {p:?}")
@@ -812,7 +817,7 @@ hard_case!(
             for &e in &edge {
                 for u in [Vec2::new(e, t), Vec2::new(t, e)] {
                     let w = warp::cosine_hemisphere(u);
-                    let pdf = warp::cosine_hemisphere_pdf(w.z);
+                    let pdf = warp::cosine_hemisphere_pdf(w);
                     let ok = w.is_finite()
                         && w.z >= 0.0
                         && (w.length() - 1.0).abs() <= 1e-6
@@ -939,7 +944,7 @@ hard_case!(
             let w = warp::phong_lobe(Vec2::new(u0, u1), n);
             seen.insert((w.x.to_bits(), w.y.to_bits(), w.z.to_bits()));
         }
-        let peak = warp::phong_lobe_pdf(1.0, n);
+        let peak = warp::phong_lobe_pdf(Vec3::Z, n);
         collect([
             check(seen.len() * 100 >= count * 99, || {
                 format!("{} distinct directions of {count}", seen.len())
@@ -972,7 +977,7 @@ hard_case!(
                 format!("u={u:?}: phong {p:?} vs hemisphere {h:?}")
             }));
             if p.z > 0.0 {
-                let pdf = warp::phong_lobe_pdf(p.z, 0.0);
+                let pdf = warp::phong_lobe_pdf(p, 0.0);
                 r.push(check(
                     rel_err(pdf as f64, warp::uniform_hemisphere_pdf(Vec3::Z) as f64) <= 1e-6,
                     || format!("pdf n=0 at z={}: {pdf}", p.z),
@@ -982,12 +987,12 @@ hard_case!(
         for n in [0.0f32, 1.0, 20.0, 1e6] {
             for u1 in [0.0f32, 0.3, ONE_MINUS_EPS] {
                 let w = warp::phong_lobe(Vec2::new(0.0, u1), n);
-                let pdf = warp::phong_lobe_pdf(w.z, n);
+                let pdf = warp::phong_lobe_pdf(w, n);
                 r.push(check(w.z == 0.0 && pdf == 0.0 && w.is_finite(), || {
                     format!("n={n} u=(0,{u1}): w={w:?} pdf={pdf}")
                 }));
             }
-            let pdf = warp::phong_lobe_pdf(0.0, n);
+            let pdf = warp::phong_lobe_pdf(Vec3::X, n);
             r.push(check(pdf == 0.0, || {
                 format!("phong_lobe_pdf(0, {n}) = {pdf}")
             }));
@@ -1208,7 +1213,7 @@ hard_case!(
             "uniform_disk_pdf",
             check_lanes(
                 &[Vec2::ZERO],
-                warp::x8::uniform_disk_pdf,
+                warp::uniform_disk_pdf,
                 warp::uniform_disk_pdf,
             ),
         ));
@@ -1216,7 +1221,7 @@ hard_case!(
             "uniform_hemisphere_pdf",
             check_lanes(
                 &[Vec3::Z],
-                warp::x8::uniform_hemisphere_pdf,
+                warp::uniform_hemisphere_pdf,
                 warp::uniform_hemisphere_pdf,
             ),
         ));
@@ -1224,7 +1229,7 @@ hard_case!(
             "uniform_sphere_pdf",
             check_lanes(
                 &[Vec3::Z],
-                warp::x8::uniform_sphere_pdf,
+                warp::uniform_sphere_pdf,
                 warp::uniform_sphere_pdf,
             ),
         ));
@@ -1411,17 +1416,17 @@ hard_case!(
         }
         for c in [0.1f32, 0.5, 1.0] {
             r.push(check(
-                warp::phong_lobe_pdf(c, -3.0) == warp::phong_lobe_pdf(c, 0.0),
+                warp::phong_lobe_pdf(Vec3::Z * c, -3.0) == warp::phong_lobe_pdf(Vec3::Z * c, 0.0),
                 || format!("phong_lobe_pdf({c}, −3)"),
             ));
-            let p = warp::phong_lobe_pdf(c, f32::INFINITY);
+            let p = warp::phong_lobe_pdf(Vec3::Z * c, f32::INFINITY);
             r.push(check(p.is_finite() || p == f32::INFINITY, || {
                 format!("pdf({c}, ∞) = {p}")
             }));
         }
         for c in [0.0f32, -0.0, -0.5, -1.0, f32::NEG_INFINITY] {
             for n in [0.0f32, 1.0, 20.0] {
-                let p = warp::phong_lobe_pdf(c, n);
+                let p = warp::phong_lobe_pdf(Vec3::new(0.0, 0.0, c), n);
                 r.push(check(p == 0.0, || {
                     format!("phong_lobe_pdf({c}, {n}) = {p}")
                 }));
@@ -1437,7 +1442,7 @@ hard_case!(
     || {
         let mut r = vec![];
         for x in [0.0f32, -0.0, -0.5, -1.0, f32::NEG_INFINITY] {
-            let p = warp::cosine_hemisphere_pdf(x);
+            let p = warp::cosine_hemisphere_pdf(Vec3::new(0.0, 0.0, x));
             r.push(check(p == 0.0, || {
                 format!("cosine_hemisphere_pdf({x}) = {p}")
             }));
@@ -1447,10 +1452,11 @@ hard_case!(
             r.push(check(p == 0.0, || format!("tent_pdf({x}) = {p}")));
         }
         for b in [
-            Vec2::new(0.7, 0.7),
-            Vec2::new(-0.1, 0.5),
-            Vec2::new(0.5, -1e-30),
-            Vec2::new(f32::INFINITY, 0.0),
+            Vec3::new(0.7, 0.7, -0.4),
+            Vec3::new(-0.1, 0.5, 0.6),
+            Vec3::new(0.5, -1e-30, 0.5),
+            Vec3::new(0.5, 0.5, -1e-30),
+            Vec3::new(f32::INFINITY, 0.0, f32::NEG_INFINITY),
         ] {
             let p = warp::uniform_triangle_pdf(b);
             r.push(check(p == 0.0, || {

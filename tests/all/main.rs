@@ -1,7 +1,7 @@
 //! The crate's tests, in one binary so that the generic library is compiled for them once.
 //!
-//! A module per layer, in the crate's own order (lanes and math, sequences, warps, estimators,
-//! scene, direct lighting, the verification layer). Run one layer or one test by its path:
+//! A module per layer, in the crate's own order (lanes and math, sequences, warps, camera,
+//! estimators, scene, direct lighting, the verification layer). Run one layer or one test by its path:
 //! `cargo test --test all warp::lanes`, `cargo test --test all hard_cases::case_04`.
 //!
 //! Two modules are left out of the wasm32-wasip1 build: `math` spawns threads, which WASI
@@ -13,7 +13,6 @@ mod common;
 mod math;
 
 mod seq {
-    mod camera;
     mod convergence;
     mod generators;
     /// The integer generators' golden values, shared with the firmware (`tests/embedded`).
@@ -36,6 +35,8 @@ mod warp {
     mod roundtrip;
     mod sweep;
 }
+
+mod camera;
 
 mod estimate {
     mod accumulators;

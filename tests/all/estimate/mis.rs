@@ -13,7 +13,7 @@ fn cutoff_quarter(a: f32, b: f32, c: f32, d: f32) -> f32 {
     mis::cutoff(a, b, c, d, 0.25)
 }
 fn cutoff_quarter_x8(a: F32x8, b: F32x8, c: F32x8, d: F32x8) -> F32x8 {
-    mis::x8::cutoff(a, b, c, d, F32x8::splat(0.25))
+    mis::cutoff(a, b, c, d, F32x8::splat(0.25))
 }
 
 /// Every two-technique heuristic, scalar and packet, with its exact weight in f64 from the
@@ -24,21 +24,21 @@ const HEURISTICS: [Heuristic; 4] = [
     (
         "balance",
         mis::balance,
-        mis::x8::balance,
+        mis::balance,
         |a, b| a / (a + b),
         3.0,
     ),
     (
         "power",
         mis::power,
-        mis::x8::power,
+        mis::power,
         |a, b| a * a / (a * a + b * b),
         5.0,
     ),
     (
         "maximum",
         mis::maximum,
-        mis::x8::maximum,
+        mis::maximum,
         |a, b| {
             if a > b {
                 1.0
@@ -212,10 +212,10 @@ fn packets_equal_scalars() {
                 assert_eq!(got[i].to_bits(), want.to_bits(), "{name} lane {i}");
             }
         }
-        let got = mis::x8::cutoff(v[0], v[1], v[2], v[3], v[4]).to_array();
-        let n3 = mis::x8::power_n([v[0], v[2], v[4]], [v[1], v[3], v[4]]);
-        let b3 = mis::x8::balance_n([v[0], v[2], v[4]], [v[1], v[3], v[4]]);
-        let pick = mis::x8::one_sample([v[0], v[1], v[2]], v[3]);
+        let got = mis::cutoff(v[0], v[1], v[2], v[3], v[4]).to_array();
+        let n3 = mis::power_n([v[0], v[2], v[4]], [v[1], v[3], v[4]]);
+        let b3 = mis::balance_n([v[0], v[2], v[4]], [v[1], v[3], v[4]]);
+        let pick = mis::one_sample([v[0], v[1], v[2]], v[3]);
         for i in 0..8 {
             let want = mis::cutoff(x[0][i], x[1][i], x[2][i], x[3][i], x[4][i]);
             assert_eq!(got[i].to_bits(), want.to_bits());

@@ -201,43 +201,39 @@ fn packets_equal_scalars_bit_for_bit() {
         let one = |e| panic!("{ctx}: {e}");
         check_lanes::<u32, f32>(
             &indices,
-            |i| seq::x8::stratified(i, n, d, s),
+            |i| seq::stratified(i, n, d, s),
             |i| seq::stratified(i, n, d, s),
         )
         .unwrap_or_else(one);
         check_lanes::<u32, f32>(
             &indices,
-            |i| seq::x8::latin_hypercube(i, n, d, s),
+            |i| seq::latin_hypercube(i, n, d, s),
             |i| seq::latin_hypercube(i, n, d, s),
         )
         .unwrap_or_else(one);
         check_lanes::<u32, Vec2>(
             &indices,
-            |i| seq::x8::jittered_2d(i, nx, ny, d, s),
+            |i| seq::jittered_2d(i, nx, ny, d, s),
             |i| seq::jittered_2d(i, nx, ny, d, s),
         )
         .unwrap_or_else(one);
         check_lanes::<u32, Vec2>(
             &indices,
-            |i| seq::x8::multi_jittered_2d(i, nx, ny, d, s),
+            |i| seq::multi_jittered_2d(i, nx, ny, d, s),
             |i| seq::multi_jittered_2d(i, nx, ny, d, s),
         )
         .unwrap_or_else(one);
         check_lanes::<u32, Vec2>(
             &indices,
-            |i| seq::x8::cmj_2d(i, nx, ny, d, s),
+            |i| seq::cmj_2d(i, nx, ny, d, s),
             |i| seq::cmj_2d(i, nx, ny, d, s),
         )
         .unwrap_or_else(one);
-        check_lanes::<u32, f32>(
-            &indices,
-            |i| seq::x8::sobol(i, d, s),
-            |i| seq::sobol(i, d, s),
-        )
-        .unwrap_or_else(one);
+        check_lanes::<u32, f32>(&indices, |i| seq::sobol(i, d, s), |i| seq::sobol(i, d, s))
+            .unwrap_or_else(one);
         check_lanes::<u32, Vec2>(
             &indices,
-            |i| seq::x8::sobol_2d(i, d, s),
+            |i| seq::sobol_2d(i, d, s),
             |i| seq::sobol_2d(i, d, s),
         )
         .unwrap_or_else(one);

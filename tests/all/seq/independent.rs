@@ -123,16 +123,12 @@ fn packet_equals_scalar_bit_for_bit() {
         let (d, s) = (rng.below(256), rng.next_u32());
         check_lanes::<u32, f32>(
             &indices,
-            |i| seq::x8::independent(i, d, s),
+            |i| seq::independent(i, d, s),
             |i| seq::independent(i, d, s),
         )
         .unwrap_or_else(|e| panic!("independent, dim {d} seed {s}: {e}"));
-        check_lanes::<u32, u32>(
-            &indices,
-            |i| seq::x8::hash3(i, d, s),
-            |i| seq::hash3(i, d, s),
-        )
-        .unwrap_or_else(|e| panic!("hash3, dim {d} seed {s}: {e}"));
+        check_lanes::<u32, u32>(&indices, |i| seq::hash3(i, d, s), |i| seq::hash3(i, d, s))
+            .unwrap_or_else(|e| panic!("hash3, dim {d} seed {s}: {e}"));
     }
 }
 
@@ -143,7 +139,7 @@ fn packet_check_catches_a_wrong_lane() {
     assert!(
         check_lanes::<u32, f32>(
             &indices,
-            |i| seq::x8::independent(i, 1, 0),
+            |i| seq::independent(i, 1, 0),
             |i| seq::independent(i, 0, 0),
         )
         .is_err()
@@ -162,7 +158,7 @@ fn last_index_is_below_one() {
         let v = seq::independent(u32::MAX, d, s);
         assert!((0.0..1.0).contains(&v), "independent(MAX, {d}, {s}) = {v}");
     }
-    let v = seq::x8::independent(U32x8::splat(u32::MAX), 5, 9).to_array();
+    let v = seq::independent(U32x8::splat(u32::MAX), 5, 9).to_array();
     assert!(v.iter().all(|x| (0.0..1.0).contains(x)));
 }
 

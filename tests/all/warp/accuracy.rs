@@ -168,7 +168,7 @@ fn cosine_hemisphere_matches_malley() {
         let r = cosine_hemisphere(d2(u));
         m.add(dist3(dv3(w), r), || format!("u={u:?} got {w:?} want {r:?}"));
         if w.z > 0.0 {
-            let p = warp::cosine_hemisphere_pdf(w.z);
+            let p = warp::cosine_hemisphere_pdf(w);
             let want = cosine_hemisphere_pdf(w.z as f64);
             mp.add(rel_err(p as f64, want), || {
                 format!("u={u:?} cos={} got {p}", w.z)
@@ -272,7 +272,7 @@ fn phong_lobe_matches_reference() {
             // The pdf is compared at the sample's own f32 cosine, so that it measures the pdf
             // function and not the cosine's rounding amplified n times.
             if w.z > 0.0 {
-                let p = warp::phong_lobe_pdf(w.z, n);
+                let p = warp::phong_lobe_pdf(w, n);
                 let want = phong_lobe_pdf(w.z as f64, n as f64);
                 mp.add(rel_err(p as f64, want), || {
                     format!("u={u:?} cos={} got {p:e} want {want:e}", w.z)
@@ -298,7 +298,7 @@ fn uniform_triangle_matches_heitz() {
     }
     let mut mp = Max::new("uniform_triangle_pdf");
     for u in grid(64) {
-        let b = Vec2::new(u[0], u[1]);
+        let b = Vec3::new(u[0], u[1], 1.0 - u[0] - u[1]);
         let want = if u[0] + u[1] <= 1.0 { 2.0 } else { 0.0 };
         let p = warp::uniform_triangle_pdf(b);
         mp.add(rel_err(p as f64, want), || format!("b={b:?} got {p}"));

@@ -150,7 +150,7 @@ fn negative_controls_are_rejected() {
     let r = cap_test(
         Cap::z(1.0),
         |i| warp::cosine_hemisphere(u(i)),
-        |w| 1.05 * warp::cosine_hemisphere_pdf(w.z),
+        |w| 1.05 * warp::cosine_hemisphere_pdf(w),
         6,
     );
     assert!(
@@ -176,7 +176,7 @@ fn negative_controls_are_rejected() {
     let r = cap_test(
         Cap::z(0.8),
         |i| warp::phong_lobe(u(i), 19.0),
-        |w| warp::phong_lobe_pdf(w.z, 20.0),
+        |w| warp::phong_lobe_pdf(w, 20.0),
         6,
     );
     assert!(!r.passes(threshold), "phong with n − 1 accepted: {r}");
@@ -242,7 +242,7 @@ fn every_pdf_integrates_to_one() {
         ),
         (
             "cosine_hemisphere".into(),
-            integrate(Cap::z(1.0), |w| warp::cosine_hemisphere_pdf(w.z), 1000),
+            integrate(Cap::z(1.0), warp::cosine_hemisphere_pdf, 1000),
             1e-5,
         ),
         (
@@ -261,7 +261,7 @@ fn every_pdf_integrates_to_one() {
         let hs = if n < 40.0 { 1.0 } else { 40.0 / n as f64 };
         cases.push((
             format!("phong_lobe n={n}"),
-            integrate(Cap::z(hs), |w| warp::phong_lobe_pdf(w.z, n), 5000),
+            integrate(Cap::z(hs), |w| warp::phong_lobe_pdf(w, n), 5000),
             1e-5,
         ));
     }
@@ -284,7 +284,7 @@ fn every_pdf_integrates_to_one() {
         tent += warp::tent_pdf((2.0 * x - 1.0) as f32) as f64 * 2.0 / m as f64;
         for j in 0..m {
             let y = (j as f64 + 0.5) / m as f64;
-            tri += warp::uniform_triangle_pdf(DVec2::new(x, y).as_vec2()) as f64;
+            tri += warp::uniform_triangle_pdf(DVec3::new(x, y, 1.0 - x - y).as_vec3()) as f64;
         }
     }
     cases.push(("uniform_triangle".into(), tri / (m * m) as f64, 1e-3));

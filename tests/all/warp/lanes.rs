@@ -177,14 +177,14 @@ fn warps_with_a_different_parameter_in_every_lane_match_their_scalar_twins() {
         f,
         "cone_h_from_cos",
         &xs,
-        warp::x8::cone_h_from_cos,
+        warp::cone_h_from_cos,
         warp::cone_h_from_cos,
     );
     run(
         f,
         "cone_h_from_sin2",
         &xs,
-        warp::x8::cone_h_from_sin2,
+        warp::cone_h_from_sin2,
         warp::cone_h_from_sin2,
     );
     let uh: Vec<(Vec2, f32)> = us.iter().copied().zip(hs.iter().copied()).collect();
@@ -192,7 +192,7 @@ fn warps_with_a_different_parameter_in_every_lane_match_their_scalar_twins() {
         f,
         "uniform_cone",
         &uh,
-        |(u, h): (Vec2x8, F32x8)| warp::x8::uniform_cone(u, h),
+        |(u, h): (Vec2x8, F32x8)| warp::uniform_cone(u, h),
         |(u, h): (Vec2, f32)| warp::uniform_cone(u, h),
     );
     let wh: Vec<(Vec3, f32)> = ws.iter().copied().zip(hs.iter().copied()).collect();
@@ -200,14 +200,14 @@ fn warps_with_a_different_parameter_in_every_lane_match_their_scalar_twins() {
         f,
         "uniform_cone_inverse",
         &wh,
-        |(w, h): (Vec3x8, F32x8)| warp::x8::uniform_cone_inverse(w, h),
+        |(w, h): (Vec3x8, F32x8)| warp::uniform_cone_inverse(w, h),
         |(w, h): (Vec3, f32)| warp::uniform_cone_inverse(w, h),
     );
     run(
         f,
         "uniform_cone_pdf",
         &wh,
-        |(w, h): (Vec3x8, F32x8)| warp::x8::uniform_cone_pdf(w, h),
+        |(w, h): (Vec3x8, F32x8)| warp::uniform_cone_pdf(w, h),
         |(w, h): (Vec3, f32)| warp::uniform_cone_pdf(w, h),
     );
 
@@ -217,23 +217,26 @@ fn warps_with_a_different_parameter_in_every_lane_match_their_scalar_twins() {
         f,
         "phong_lobe",
         &un,
-        |(u, n): (Vec2x8, F32x8)| warp::x8::phong_lobe(u, n),
+        |(u, n): (Vec2x8, F32x8)| warp::phong_lobe(u, n),
         |(u, n): (Vec2, f32)| warp::phong_lobe(u, n),
     );
-    let cn: Vec<(f32, f32)> = xs.iter().copied().zip(ns.iter().copied()).collect();
+    // The hard values as cos α, in directions whose x and y are hard values too.
+    let cn: Vec<(Vec3, f32)> = (xs.iter().zip(&ws).zip(&ns))
+        .map(|((&c, w), &n)| (Vec3::new(w.x, w.y, c), n))
+        .collect();
     run(
         f,
         "phong_lobe_pdf",
         &cn,
-        |(c, n): (F32x8, F32x8)| warp::x8::phong_lobe_pdf(c, n),
-        |(c, n): (f32, f32)| warp::phong_lobe_pdf(c, n),
+        |(w, n): (Vec3x8, F32x8)| warp::phong_lobe_pdf(w, n),
+        |(w, n): (Vec3, f32)| warp::phong_lobe_pdf(w, n),
     );
     let wn: Vec<(Vec3, f32)> = ws.iter().copied().zip(ns.iter().copied()).collect();
     run(
         f,
         "phong_lobe_inverse",
         &wn,
-        |(w, n): (Vec3x8, F32x8)| warp::x8::phong_lobe_inverse(w, n),
+        |(w, n): (Vec3x8, F32x8)| warp::phong_lobe_inverse(w, n),
         |(w, n): (Vec3, f32)| warp::phong_lobe_inverse(w, n),
     );
 
@@ -245,7 +248,7 @@ fn warps_with_a_different_parameter_in_every_lane_match_their_scalar_twins() {
         f,
         "spherical_triangle",
         &st,
-        |(u, (a, b, c)): (Vec2x8, Tri8)| warp::x8::spherical_triangle(u, a, b, c),
+        |(u, (a, b, c)): (Vec2x8, Tri8)| warp::spherical_triangle(u, a, b, c),
         |(u, (a, b, c)): (Vec2, Tri)| warp::spherical_triangle(u, a, b, c),
     );
     let tw: Vec<(Vec3, Tri)> = st
@@ -260,14 +263,14 @@ fn warps_with_a_different_parameter_in_every_lane_match_their_scalar_twins() {
         f,
         "spherical_triangle_pdf",
         &tw,
-        |(w, (a, b, c)): (Vec3x8, Tri8)| warp::x8::spherical_triangle_pdf(w, a, b, c),
+        |(w, (a, b, c)): (Vec3x8, Tri8)| warp::spherical_triangle_pdf(w, a, b, c),
         |(w, (a, b, c)): (Vec3, Tri)| warp::spherical_triangle_pdf(w, a, b, c),
     );
     run(
         f,
         "spherical_triangle_inverse",
         &tw,
-        |(w, (a, b, c)): (Vec3x8, Tri8)| warp::x8::spherical_triangle_inverse(w, a, b, c),
+        |(w, (a, b, c)): (Vec3x8, Tri8)| warp::spherical_triangle_inverse(w, a, b, c),
         |(w, (a, b, c)): (Vec3, Tri)| warp::spherical_triangle_inverse(w, a, b, c),
     );
 
@@ -277,7 +280,7 @@ fn warps_with_a_different_parameter_in_every_lane_match_their_scalar_twins() {
         f,
         "spherical_rectangle",
         &sr,
-        |(u, (s, ex, ey)): (Vec2x8, Tri8)| warp::x8::spherical_rectangle(u, s, ex, ey),
+        |(u, (s, ex, ey)): (Vec2x8, Tri8)| warp::spherical_rectangle(u, s, ex, ey),
         |(u, (s, ex, ey)): (Vec2, Tri)| warp::spherical_rectangle(u, s, ex, ey),
     );
     let rp: Vec<((Vec3, Vec3), Tri)> = sr
@@ -294,7 +297,7 @@ fn warps_with_a_different_parameter_in_every_lane_match_their_scalar_twins() {
         "spherical_rectangle_pdf",
         &rp,
         |((w, _), (s, ex, ey)): ((Vec3x8, Vec3x8), Tri8)| {
-            warp::x8::spherical_rectangle_pdf(w, s, ex, ey)
+            warp::spherical_rectangle_pdf(w, s, ex, ey)
         },
         |((w, _), (s, ex, ey)): ((Vec3, Vec3), Tri)| warp::spherical_rectangle_pdf(w, s, ex, ey),
     );
@@ -303,7 +306,7 @@ fn warps_with_a_different_parameter_in_every_lane_match_their_scalar_twins() {
         "spherical_rectangle_inverse",
         &rp,
         |((_, p), (s, ex, ey)): ((Vec3x8, Vec3x8), Tri8)| {
-            warp::x8::spherical_rectangle_inverse(p, s, ex, ey)
+            warp::spherical_rectangle_inverse(p, s, ex, ey)
         },
         |((_, p), (s, ex, ey)): ((Vec3, Vec3), Tri)| {
             warp::spherical_rectangle_inverse(p, s, ex, ey)
@@ -317,7 +320,7 @@ fn warps_with_a_different_parameter_in_every_lane_match_their_scalar_twins() {
         "Frame",
         &nv,
         |(n, v): (Vec3x8, Vec3x8)| {
-            let fr = frame::x8::Frame::from_normal(n);
+            let fr = frame::Frame::from_normal(n);
             (fr.t, fr.b, (fr.to_local(v), fr.to_world(v)))
         },
         |(n, v): (Vec3, Vec3)| {
@@ -340,7 +343,7 @@ fn negative_control_one_lane_off_by_one_ulp_is_caught() {
     let mut g = TestRng::new(11);
     let us: Vec<Vec2> = (0..64).map(|_| g.u2()).collect();
     let broken = |u: Vec2x8| {
-        let mut p = warp::x8::concentric_disk(u);
+        let mut p = warp::concentric_disk(u);
         let mut x = p.x.to_array();
         x[5] = f32::from_bits(x[5].to_bits() ^ 1);
         p.x = F32x8::new(x);

@@ -203,7 +203,7 @@ proptest! {
             prop_assert!(w.z >= 0.0, "{:?} → {:?}", u, w);
         }
         let w = warp::cosine_hemisphere(u);
-        let pdf = warp::cosine_hemisphere_pdf(w.z);
+        let pdf = warp::cosine_hemisphere_pdf(w);
         prop_assert!(pdf >= 0.0 && pdf.is_finite());
         check_unit(warp::uniform_sphere(u))?;
         for back in [
@@ -221,7 +221,7 @@ proptest! {
         // Strictly inside the square the concentric radius is < 1, so z > 0 and the pdf > 0.
         let w = warp::cosine_hemisphere(u);
         prop_assert!(w.z > 0.0, "{:?} → {:?}", u, w);
-        let pdf = warp::cosine_hemisphere_pdf(w.z);
+        let pdf = warp::cosine_hemisphere_pdf(w);
         prop_assert!(pdf > 0.0 && pdf.is_finite());
         prop_assert!(warp::uniform_hemisphere_pdf(warp::uniform_hemisphere(u)) > 0.0);
         prop_assert!(warp::uniform_sphere_pdf(warp::uniform_sphere(u)) > 0.0);
@@ -254,7 +254,7 @@ proptest! {
         let w = warp::phong_lobe(u, n);
         check_unit(w)?;
         prop_assert!(w.z >= 0.0, "n={} {:?} → {:?}", n, u, w);
-        let pdf = warp::phong_lobe_pdf(w.z, n);
+        let pdf = warp::phong_lobe_pdf(w, n);
         let peak = (n as f64 + 1.0) / std::f64::consts::TAU;
         prop_assert!(pdf >= 0.0 && pdf as f64 <= peak * (1.0 + 1e-5), "pdf {} peak {}", pdf, peak);
         let back = warp::phong_lobe_inverse(w, n);
@@ -265,7 +265,7 @@ proptest! {
     fn phong_pdf_positive_inside(u in uv_inner(), n in phong_n()) {
         // u₀ ≥ 2⁻²⁴ gives cosⁿα = u₀^{n/(n+1)} ≥ 2⁻²⁴: the pdf is positive, and finite.
         let w = warp::phong_lobe(u, n);
-        let pdf = warp::phong_lobe_pdf(w.z, n);
+        let pdf = warp::phong_lobe_pdf(w, n);
         prop_assert!(pdf > 0.0 && pdf.is_finite(), "n={} {:?} → {:?}, pdf {}", n, u, w, pdf);
     }
 
@@ -276,7 +276,7 @@ proptest! {
         prop_assert!(b.x >= 0.0 && b.y >= 0.0 && b.z >= 0.0, "{:?} → {:?}", u, b);
         let sum = b.x as f64 + b.y as f64 + b.z as f64;
         prop_assert!((sum - 1.0).abs() <= 1e-6, "{:?} → sum {}", u, sum);
-        prop_assert!(warp::uniform_triangle_pdf(Vec2::new(b.x, b.y)) == 2.0);
+        prop_assert!(warp::uniform_triangle_pdf(b) == 2.0);
         let back = warp::uniform_triangle_inverse(b);
         prop_assert!(back.is_finite() && (0.0..=1.0).contains(&back.x) && (0.0..=1.0).contains(&back.y));
     }

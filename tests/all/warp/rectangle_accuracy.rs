@@ -806,7 +806,7 @@ fn print_timings() {
         r8.iter()
             .zip(&u8)
             .map(|(r, &u)| {
-                warp::x8::urena_rectangle(u, black_box(r.0), r.1, r.2)
+                warp::urena_rectangle(u, black_box(r.0), r.1, r.2)
                     .x
                     .to_array()[0]
             })
@@ -816,7 +816,7 @@ fn print_timings() {
         r8.iter()
             .zip(&u8)
             .map(|(r, &u)| {
-                warp::x8::spherical_rectangle(u, black_box(r.0), r.1, r.2)
+                warp::spherical_rectangle(u, black_box(r.0), r.1, r.2)
                     .1
                     .to_array()[0]
             })

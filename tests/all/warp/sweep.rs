@@ -165,7 +165,7 @@ fn frames_on_special_normals_keep_the_policy_in_both_widths() {
         .flat_map(|&n| vs.iter().map(move |&v| (n, v)))
         .collect();
     let frame_x8 = |(n, v): (Vec3x8, Vec3x8)| {
-        let f = frame::x8::Frame::from_normal(n);
+        let f = frame::Frame::from_normal(n);
         (f.t, f.to_local(v), f.to_world(v))
     };
     let frame_1 = |(n, v): (Vec3, Vec3)| {
@@ -227,9 +227,9 @@ fn generators_on_special_indices_and_counts_stay_in_the_unit_interval() {
             };
             let eight = |i: U32x8| {
                 (
-                    seq::x8::independent(i, d, s),
-                    seq::x8::sobol(i, d, s),
-                    seq::x8::sobol_2d(i, d, s),
+                    seq::independent(i, d, s),
+                    seq::sobol(i, d, s),
+                    seq::sobol_2d(i, d, s),
                 )
             };
             check_lanes(&indices, eight, one).unwrap_or_else(|e| panic!("{e}"));
@@ -244,9 +244,9 @@ fn generators_on_special_indices_and_counts_stay_in_the_unit_interval() {
                     };
                     let eight = |i: U32x8| {
                         (
-                            seq::x8::stratified(i, n, d, s),
-                            seq::x8::jittered_2d(i, n, m, d, s),
-                            seq::x8::multi_jittered_2d(i, n, m, d, s),
+                            seq::stratified(i, n, d, s),
+                            seq::jittered_2d(i, n, m, d, s),
+                            seq::multi_jittered_2d(i, n, m, d, s),
                         )
                     };
                     check_lanes(&indices, eight, one).unwrap_or_else(|e| panic!("{e}"));

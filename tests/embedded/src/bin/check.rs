@@ -132,9 +132,9 @@ fn warps() -> bool {
 
         let w = warp::cosine_hemisphere(u);
         t.within(d(w).distance(warp::cosine_hemisphere(ud)), POINT_TOL);
-        let pdf = warp::cosine_hemisphere_pdf(w.z);
+        let pdf = warp::cosine_hemisphere_pdf(w);
         t.within(
-            rel(f64::from(pdf), warp::cosine_hemisphere_pdf(f64::from(w.z))),
+            rel(f64::from(pdf), warp::cosine_hemisphere_pdf(w.as_dvec3())),
             PDF_TOL,
         );
         let w = warp::uniform_hemisphere(u);
@@ -159,9 +159,9 @@ fn warps() -> bool {
         );
         let w = warp::phong_lobe(u, n);
         t.within(d(w).distance(warp::phong_lobe(ud, nd)), POINT_TOL);
-        let pdf = warp::phong_lobe_pdf(w.z, n);
+        let pdf = warp::phong_lobe_pdf(w, n);
         t.within(
-            rel(f64::from(pdf), warp::phong_lobe_pdf(f64::from(w.z), nd)),
+            rel(f64::from(pdf), warp::phong_lobe_pdf(w.as_dvec3(), nd)),
             PDF_TOL,
         );
         let bary = warp::uniform_triangle(u);

@@ -11,6 +11,6 @@ use mcsample::warp;
 fn main() -> ! {
     let u = core::hint::black_box(Vec2::new(0.3, 0.7));
     let w = warp::cosine_hemisphere(u);
-    let pdf = warp::cosine_hemisphere_pdf(w.z);
+    let pdf = warp::cosine_hemisphere_pdf(w);
     mcsample_firmware::exit(core::hint::black_box(w.z * pdf) > 0.0)
 }

@@ -1,13 +1,15 @@
-//! `seq::CameraSample`: packets equal scalars, film/lens/time ranges and stratification, the
+//! `camera::CameraSample`: packets equal scalars, film/lens/time ranges and stratification, the
 //! filters' moments, decorrelated dimensions and pixels (with controls), and the documented
 //! shutter edge cases.
 
 use glam::Vec2;
+use mcsample::camera::{CameraSample, PixelFilter};
 use mcsample::seq::{
-    self, CameraSample, PixelFilter,
+    self,
     quality::{is_elementary_net, net_violation},
 };
 use mcsample::verify::check_lanes;
+use mcsample::x8::U32x8;
 
 const SHUTTER: (f32, f32) = (0.25, 0.75);
 
@@ -35,7 +37,7 @@ fn packets_equal_scalars_bit_for_bit() {
                 check_lanes::<u32, (Vec2, Vec2, f32)>(
                     &indices,
                     |i| {
-                        let s = seq::x8::CameraSample::generate(pixel, i, seed, filter, shutter);
+                        let s = CameraSample::<U32x8>::generate(pixel, i, seed, filter, shutter);
                         (s.film, s.lens, s.time)
                     },
                     |i| {

@@ -11,7 +11,8 @@ use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use glam::Vec3;
-use mcsample::direct::{self, Config, Generator, Lights, Sequence, ShadingPoint, Strategy};
+use mcsample::direct::{self, Config, Lights, ShadingPoint, Strategy};
+use mcsample::seq::{Generator, Sequence};
 use mcsample::verify::direct::grid_scenes;
 use mcsample::x8::{F32x8, U32x8, Vec3x8};
 

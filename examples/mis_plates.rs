@@ -16,8 +16,9 @@ use std::time::Instant;
 
 use glam::{Vec2, Vec3};
 use mcsample::camera::{CameraSample, PixelFilter};
-use mcsample::direct::{self, Config, Generator, Lights, Sequence, ShadingPoint, Strategy};
+use mcsample::direct::{self, Config, Lights, ShadingPoint, Strategy};
 use mcsample::scene::{Light, Phong, SphereLight};
+use mcsample::seq::{Generator, Sequence};
 use mcsample::x8::{F32x8, U32x8, Vec3x8};
 
 /// A plate: the parallelogram corner + s·ex + t·ey, s, t ∈ [0, 1], facing `n`, with its

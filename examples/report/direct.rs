@@ -9,7 +9,8 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use glam::Vec3;
-use mcsample::direct::{self, Config as DirectConfig, Generator, Lights, Sequence, Strategy};
+use mcsample::direct::{self, Config as DirectConfig, Lights, Strategy};
+use mcsample::seq::{Generator, Sequence};
 use mcsample::verify::direct::{
     DirectRun, DirectScene, analytic_scenes, grid_scenes, quadrature_scenes, run,
 };

@@ -11,7 +11,8 @@
 use std::path::Path;
 use std::time::Instant;
 
-use mcsample::direct::{Config as DirectConfig, Generator, Strategy};
+use mcsample::direct::{Config as DirectConfig, Strategy};
+use mcsample::seq::Generator;
 use mcsample::verify::direct::{grid_scenes, run};
 use plotters::coord::Shift;
 use plotters::prelude::*;

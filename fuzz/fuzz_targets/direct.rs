@@ -10,7 +10,8 @@
 
 use glam::Vec3;
 use libfuzzer_sys::fuzz_target;
-use mcsample::direct::{self, Config, Generator, Lights, Sequence, ShadingPoint, Strategy};
+use mcsample::direct::{self, Config, Lights, ShadingPoint, Strategy};
+use mcsample::seq::{Generator, Sequence};
 use mcsample::scene::{DiskLight, Lambert, Light, Phong, RectangleLight, SphereLight, TriangleLight};
 use mcsample::verify::direct::Material;
 use mcsample::x8::{F32x8, U32x8, Vec3x8};

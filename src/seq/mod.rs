@@ -45,12 +45,14 @@
 
 mod hash;
 pub mod quality;
+mod samples;
 mod sobol;
 mod stratify;
 
 pub use crate::lane::U32Lane;
 pub(crate) use hash::lowbias32;
 pub use hash::{hash3, independent};
+pub use samples::{Generator, Samples, Sequence};
 pub use sobol::{sobol, sobol_2d};
 pub use stratify::{
     MAX_STRATA, cmj_2d, jittered_2d, latin_hypercube, multi_jittered_2d, stratified,

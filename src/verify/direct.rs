@@ -20,13 +20,14 @@ use std::vec::Vec;
 
 use glam::{DVec3, Vec3};
 
-use crate::direct::{self, Config, Generator, Lights, Sequence, ShadingPoint, Strategy};
+use crate::direct::{self, Config, Lights, ShadingPoint, Strategy};
 use crate::estimate::MeanVar;
 use crate::lane::F32x8;
 use crate::point::Point3;
 use crate::scene::{
     Bsdf, BsdfSample, DiskLight, Lambert, Light, Phong, RectangleLight, SphereLight,
 };
+use crate::seq::{Generator, Sequence};
 use crate::x8::{U32x8, Vec3x8};
 
 /// A BSDF of either kind, so that scenes can hold one.

@@ -3,13 +3,12 @@
 //! splitting, bad input, and packets against scalars.
 
 use glam::{DVec3, Vec2, Vec3};
-use mcsample::direct::{
-    self, Config, Estimate, Generator, Lights, Samples, Sequence, ShadingPoint, Strategy,
-};
+use mcsample::direct::{self, Config, Estimate, Lights, ShadingPoint, Strategy};
 use mcsample::scene::{
     Bsdf, BsdfSample, DiskLight, Lambert, Light, Phong, PowerTable, RectangleLight, SphereLight,
     TriangleLight,
 };
+use mcsample::seq::{Generator, Samples, Sequence};
 use mcsample::verify::direct::{
     DirectScene, Material, analytic_scenes, grid_scenes, quadrature_scenes, run,
     sphere_light_quadrature,

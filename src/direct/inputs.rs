@@ -1,0 +1,310 @@
+//! What a caller passes to [`estimate`](super::estimate): the strategy, the sample counts, the
+//! shading point, the lights and the visibility test; and the widths the estimator runs in.
+
+use glam::Vec3;
+
+use super::MAX_SAMPLES;
+use crate::lane::{F32x8, Lane, Lane32, lane_of, zip_map};
+use crate::math::Math;
+use crate::mis::{self, OptimalMis};
+use crate::point::Point3;
+use crate::scene::{Light, LightChoice, PowerTable};
+use crate::x8::Vec3x8;
+
+/// A strategy of the lecture. Each spends N = `n_light + n_bsdf` samples ([`Config`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Strategy {
+    /// θ and φ uniform: the lecture's "inefficient but correct" estimator π²·f·Le·cos θ·sin θ.
+    UniformThetaPhi,
+    /// Directions uniform over the hemisphere, pdf 1/(2π).
+    UniformHemisphere,
+    /// Directions by the cosine, pdf cos θ/π.
+    CosineHemisphere,
+    /// A light, then a point uniform on its area; the pdf converted by cos θₗ/r².
+    LightArea,
+    /// A light, then a direction by the light's own solid-angle sampler.
+    LightSolidAngle,
+    /// Directions by the BSDF's sampler.
+    Bsdf,
+    /// `n_light` light and `n_bsdf` BSDF samples, balance heuristic.
+    MisBalance,
+    /// `n_light` light and `n_bsdf` BSDF samples, power heuristic (β = 2).
+    MisPower,
+    /// N samples, each from light sampling with probability `n_light`/N, else the BSDF, weighted
+    /// by the balance heuristic (the mixture density).
+    OneSampleMis,
+    /// The samples of [`MisBalance`](Self::MisBalance), combined by optimal MIS (Kondapaneni
+    /// et al. 2019), cross-fitted: α from one half of the samples weights the other half, per
+    /// channel; the balance heuristic below [`OPTIMAL_MIN_SAMPLES`](super::OPTIMAL_MIN_SAMPLES) of either technique.
+    /// Unbiased when the samples of
+    /// an estimate are independent (see `Estimator::optimal`). Its weights can be negative (the
+    /// control variate), so one estimate can be negative; the mean is not.
+    OptimalMis,
+    /// Resampled importance sampling (Talbot et al. 2005): N light-sampled candidates weighted
+    /// by their unshadowed contribution's luminance, one of them kept, one shadow ray.
+    Ris,
+}
+
+impl Strategy {
+    /// Every strategy, in the lecture's order.
+    pub const ALL: [Strategy; 11] = [
+        Self::UniformThetaPhi,
+        Self::UniformHemisphere,
+        Self::CosineHemisphere,
+        Self::LightArea,
+        Self::LightSolidAngle,
+        Self::Bsdf,
+        Self::MisBalance,
+        Self::MisPower,
+        Self::OneSampleMis,
+        Self::OptimalMis,
+        Self::Ris,
+    ];
+
+    /// The name the report and its JSON use.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::UniformThetaPhi => "uniform_theta_phi",
+            Self::UniformHemisphere => "uniform_hemisphere",
+            Self::CosineHemisphere => "cosine_hemisphere",
+            Self::LightArea => "light_area",
+            Self::LightSolidAngle => "light_solid_angle",
+            Self::Bsdf => "bsdf",
+            Self::MisBalance => "mis_balance",
+            Self::MisPower => "mis_power",
+            Self::OneSampleMis => "one_sample_mis",
+            Self::OptimalMis => "optimal_mis",
+            Self::Ris => "ris",
+        }
+    }
+}
+
+/// Sample counts and roulette.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Config {
+    /// Light samples per estimate (MIS), clamped to [`MAX_SAMPLES`].
+    pub n_light: u32,
+    /// BSDF samples per estimate (MIS), clamped to [`MAX_SAMPLES`].
+    pub n_bsdf: u32,
+    /// The roulette threshold τ on a shadow ray's contribution (luminance); 0 (or NaN, or
+    /// negative) traces every ray.
+    pub roulette: f32,
+}
+
+impl Config {
+    /// `n_light` light and `n_bsdf` BSDF samples, no roulette.
+    pub const fn new(n_light: u32, n_bsdf: u32) -> Self {
+        Self {
+            n_light,
+            n_bsdf,
+            roulette: 0.0,
+        }
+    }
+
+    /// The same counts with roulette threshold τ.
+    pub const fn with_roulette(self, tau: f32) -> Self {
+        Self {
+            roulette: tau,
+            ..self
+        }
+    }
+
+    /// The counts as used: each clamped to [`MAX_SAMPLES`].
+    pub(super) fn counts(&self) -> (u32, u32) {
+        (self.n_light.min(MAX_SAMPLES), self.n_bsdf.min(MAX_SAMPLES))
+    }
+
+    /// N: the samples every strategy takes per estimate. A [`Sequence`](crate::seq::Sequence) should advance `first`
+    /// by this much per estimate.
+    pub fn samples(&self) -> u32 {
+        let (l, b) = self.counts();
+        l + b
+    }
+}
+
+/// Where the estimate is taken: the point, its surface normal and the direction towards the
+/// viewer, in world space.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ShadingPoint<V: Point3 = Vec3> {
+    /// The position.
+    pub p: V,
+    /// The surface normal (normalised by the estimator).
+    pub n: V,
+    /// The direction towards the viewer (normalised by the estimator).
+    pub wo: V,
+}
+
+/// One estimate of the reflected radiance.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Estimate<V: Point3 = Vec3> {
+    /// L(x, ωo), RGB.
+    pub radiance: V,
+    /// The visibility calls it made (for a packet, the active lanes summed over calls).
+    pub shadow_rays: u32,
+}
+
+/// The lights of a scene and how a light sample chooses among them.
+#[derive(Clone, Copy, Debug)]
+pub struct Lights<'a> {
+    lights: &'a [Light],
+    table: Option<PowerTable<'a>>,
+}
+
+impl<'a> Lights<'a> {
+    /// Every light with equal probability.
+    pub fn uniform(lights: &'a [Light]) -> Self {
+        Self {
+            lights,
+            table: None,
+        }
+    }
+
+    /// Lights chosen in proportion to power by `table`, which must have been built from the
+    /// same slice ([`PowerTable::new`]).
+    pub fn by_power(lights: &'a [Light], table: PowerTable<'a>) -> Self {
+        Self {
+            lights,
+            table: Some(table),
+        }
+    }
+
+    /// The lights.
+    pub fn lights(&self) -> &'a [Light] {
+        self.lights
+    }
+
+    pub(super) fn choose(&self, u: f32) -> LightChoice {
+        match &self.table {
+            Some(t) => t.select(u),
+            None => LightChoice::uniform(self.lights.len(), u),
+        }
+    }
+
+    pub(super) fn pmf(&self, index: usize) -> f32 {
+        match &self.table {
+            Some(t) => t.pmf(index),
+            None => LightChoice::uniform(self.lights.len(), 0.0).pmf,
+        }
+    }
+}
+
+/// The caller's visibility test between the shading point and a point on a light.
+pub trait Visibility<V: Point3> {
+    /// True (per lane) where `to` is visible from `from`, for the lanes of `active`; the answer
+    /// is ignored elsewhere.
+    fn visible(
+        &mut self,
+        active: <V::Lane as Lane>::Mask,
+        from: V,
+        to: V,
+    ) -> <V::Lane as Lane>::Mask;
+}
+
+impl<F: FnMut(Vec3, Vec3) -> bool> Visibility<Vec3> for F {
+    #[inline]
+    fn visible(&mut self, active: bool, from: Vec3, to: Vec3) -> bool {
+        active && self(from, to)
+    }
+}
+
+impl<F: FnMut(F32x8, Vec3x8, Vec3x8) -> F32x8> Visibility<Vec3x8> for F {
+    #[inline]
+    fn visible(&mut self, active: F32x8, from: Vec3x8, to: Vec3x8) -> F32x8 {
+        active & self(active, from, to)
+    }
+}
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for f32 {}
+    impl Sealed for crate::lane::F32x8 {}
+}
+
+/// The widths the estimator runs in: `f32` and [`F32x8`]. Per-lane work (the light choice, the
+/// f64 accumulators of optimal MIS and RIS) goes through these lanes one at a time, with the
+/// scalar code.
+pub trait DirectLane: Math + Lane32 + sealed::Sealed {
+    /// The number of lanes.
+    const WIDTH: usize;
+    /// Lane i.
+    fn lane(self, i: usize) -> f32;
+    /// The lanes f(0), f(1), ….
+    fn from_fn(f: impl FnMut(usize) -> f32) -> Self;
+    /// The number of lanes set in `m`.
+    fn count(m: Self::Mask) -> u32;
+
+    /// Optimal MIS's accumulator of one colour channel at this width: [`OptimalMis`] or
+    /// [`mis::OptimalMisX8`], the same sums lane by lane.
+    type Optimal: Copy;
+    /// An empty accumulator for counts n₁, n₂.
+    fn optimal(n1: f64, n2: f64) -> Self::Optimal;
+    /// One sample per lane.
+    fn optimal_push(acc: &mut Self::Optimal, f: Self, pdf1: Self, pdf2: Self);
+    /// Cross-fitted: the mean of a's estimate with α from b and b's with α from a.
+    fn optimal_cross(a: &Self::Optimal, b: &Self::Optimal) -> Self;
+    /// The balance heuristic's estimate.
+    fn optimal_balance(a: &Self::Optimal) -> Self;
+}
+
+impl DirectLane for f32 {
+    const WIDTH: usize = 1;
+    #[inline(always)]
+    fn lane(self, _i: usize) -> f32 {
+        self
+    }
+    #[inline(always)]
+    fn from_fn(mut f: impl FnMut(usize) -> f32) -> Self {
+        f(0)
+    }
+    #[inline(always)]
+    fn count(m: bool) -> u32 {
+        u32::from(m)
+    }
+
+    type Optimal = OptimalMis;
+    fn optimal(n1: f64, n2: f64) -> OptimalMis {
+        OptimalMis::new(n1, n2)
+    }
+    #[inline(always)]
+    fn optimal_push(acc: &mut OptimalMis, f: f32, pdf1: f32, pdf2: f32) {
+        acc.push(f64::from(f), f64::from(pdf1), f64::from(pdf2));
+    }
+    fn optimal_cross(a: &OptimalMis, b: &OptimalMis) -> f32 {
+        (0.5 * (a.estimate_with_alpha_of(b) + b.estimate_with_alpha_of(a))) as f32
+    }
+    fn optimal_balance(a: &OptimalMis) -> f32 {
+        a.balance_estimate() as f32
+    }
+}
+
+impl DirectLane for F32x8 {
+    const WIDTH: usize = 8;
+    #[inline(always)]
+    fn lane(self, i: usize) -> f32 {
+        lane_of(&self.to_array(), i)
+    }
+    #[inline(always)]
+    fn from_fn(f: impl FnMut(usize) -> f32) -> Self {
+        F32x8::new(core::array::from_fn(f))
+    }
+    #[inline(always)]
+    fn count(m: F32x8) -> u32 {
+        m.to_bitmask().count_ones()
+    }
+
+    type Optimal = mis::OptimalMisX8;
+    fn optimal(n1: f64, n2: f64) -> mis::OptimalMisX8 {
+        mis::OptimalMisX8::new(n1, n2)
+    }
+    #[inline(always)]
+    fn optimal_push(acc: &mut mis::OptimalMisX8, f: F32x8, pdf1: F32x8, pdf2: F32x8) {
+        acc.push(f, pdf1, pdf2);
+    }
+    fn optimal_cross(a: &mis::OptimalMisX8, b: &mis::OptimalMisX8) -> F32x8 {
+        let (ab, ba) = (a.estimate_with_alpha_of(b), b.estimate_with_alpha_of(a));
+        F32x8::new(zip_map(ab, ba, |x, y| (0.5 * (x + y)) as f32))
+    }
+    fn optimal_balance(a: &mis::OptimalMisX8) -> F32x8 {
+        F32x8::new(a.balance_estimate().map(|x| x as f32))
+    }
+}

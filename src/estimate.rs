@@ -7,16 +7,21 @@
 //!   within 1e-10 relative, as it does on 1e9 + U(0, 1) and on magnitudes spread over twenty
 //!   decades (worst measured 1.8e-11, `tests/all/estimate/accumulators.rs`). [`MeanVar::merge`] is Chan et al.'s
 //!   pairwise update, so partial accumulators (threads, packet lanes) combine exactly as one long
-//!   stream would, up to rounding. [`MeanVarX8`] keeps one accumulator per packet lane.
+//!   stream would, up to rounding. `MeanVar<F64x8>` keeps one accumulator per packet lane.
 //! - [`roulette`] continues with probability q and weights survivors by 1/q (unbiased: the mean
 //!   is unchanged and the variance grows by (1/q − 1)·E\[F²\]).
 //! - [`split_count`] is the number of sub-samples k that minimises variance × cost for
 //!   Var = V₁ + V₂/k and cost C₁ + k·C₂.
 
-use crate::lane::{F32x8, Lane};
+use crate::lane::{Lane, Lanes};
 
 /// A running mean and unbiased variance, accumulated in f64 (Welford 1962; merge by Chan,
 /// Golub and LeVeque 1979). The count is a u64, so 2³² pushes do not wrap.
+///
+/// Generic over the f64 lane `W`: `MeanVar` (`W = f64`) is one accumulator, `MeanVar<F64x8>`
+/// eight, one per packet lane, each pushed by the same operations as a scalar accumulator of that
+/// lane's values, so lane i equals it bit for bit ([`lane`](Self::lane)); [`reduce`](Self::reduce)
+/// merges the lanes into one.
 ///
 /// A NaN or infinite value makes the mean and variance NaN or infinite from then on: the
 /// accumulator reports what it was given rather than hiding it.
@@ -31,44 +36,44 @@ use crate::lane::{F32x8, Lane};
 /// assert!((a.variance() - 4.0 / 3.0).abs() < 1e-9);
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct MeanVar {
+pub struct MeanVar<W = f64> {
     count: u64,
     /// The first value: the others are accumulated as x − shift, which is exact when they lie
     /// within a factor of two of it, so a large common offset costs no precision.
-    shift: f64,
+    shift: W,
     /// The mean of x − shift.
-    mean: f64,
+    mean: W,
     /// Σ (x − mean)², kept up to date by Welford's update.
-    m2: f64,
+    m2: W,
 }
 
-impl MeanVar {
+impl<W: Lanes<Scalar = f64>> MeanVar<W> {
     /// An empty accumulator.
     pub const fn new() -> Self {
         Self {
             count: 0,
-            shift: 0.0,
-            mean: 0.0,
-            m2: 0.0,
+            shift: W::ZERO,
+            mean: W::ZERO,
+            m2: W::ZERO,
         }
     }
 
-    /// Adds one value.
+    /// Adds one value (per lane).
     #[inline]
-    pub fn push(&mut self, x: f64) {
+    pub fn push(&mut self, x: W) {
         if self.count == 0 {
             self.shift = x;
         }
         let x = x - self.shift;
         self.count += 1;
         let d = x - self.mean;
-        self.mean += d / self.count as f64;
+        self.mean = self.mean + d / W::c(self.count as f64);
         // (x − old mean)(x − new mean): the increment of Σ(x − mean)², never negative.
-        self.m2 += d * (x - self.mean);
+        self.m2 = self.m2 + d * (x - self.mean);
     }
 
-    /// Adds everything `other` has seen, as if its values had been pushed here.
-    pub fn merge(&mut self, other: &MeanVar) {
+    /// Adds everything `other` has seen, as if its values had been pushed here (lane by lane).
+    pub fn merge(&mut self, other: &Self) {
         if other.count == 0 {
             return;
         }
@@ -79,73 +84,54 @@ impl MeanVar {
         let (na, nb) = (self.count as f64, other.count as f64);
         let n = na + nb;
         let d = (other.shift - self.shift) + (other.mean - self.mean);
-        self.mean += d * (nb / n);
-        self.m2 += other.m2 + d * d * (na * (nb / n));
+        self.mean = self.mean + d * W::c(nb / n);
+        self.m2 = self.m2 + (other.m2 + d * d * W::c(na * (nb / n)));
         self.count += other.count;
     }
 
-    /// The number of values pushed.
+    /// The number of values pushed (per lane).
     pub fn count(&self) -> u64 {
         self.count
     }
 
     /// The mean; 0 before the first value.
-    pub fn mean(&self) -> f64 {
+    pub fn mean(&self) -> W {
         self.shift + self.mean
     }
 
     /// The unbiased variance Σ(x − mean)²/(n − 1); 0 for fewer than two values.
-    pub fn variance(&self) -> f64 {
+    pub fn variance(&self) -> W {
         if self.count < 2 {
-            0.0
+            W::ZERO
         } else {
-            self.m2 / (self.count - 1) as f64
+            self.m2 / W::c((self.count - 1) as f64)
         }
     }
 
     /// The standard error of the mean, √(variance/n); 0 for fewer than two values.
-    pub fn std_error(&self) -> f64 {
+    pub fn std_error(&self) -> W {
         if self.count < 2 {
-            0.0
+            W::ZERO
         } else {
-            libm::sqrt(self.variance() / self.count as f64)
-        }
-    }
-}
-
-/// Eight independent [`MeanVar`] accumulators, one per packet lane; [`reduce`](Self::reduce)
-/// merges them into one.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct MeanVarX8 {
-    lanes: [MeanVar; 8],
-}
-
-impl MeanVarX8 {
-    /// Eight empty accumulators.
-    pub const fn new() -> Self {
-        Self {
-            lanes: [MeanVar::new(); 8],
+            (self.variance() / W::c(self.count as f64)).sqrt()
         }
     }
 
-    /// Adds lane i of `x` to accumulator i.
-    #[inline]
-    pub fn push(&mut self, x: F32x8) {
-        for (acc, v) in self.lanes.iter_mut().zip(x.to_array()) {
-            acc.push(f64::from(v));
+    /// Lane `i`'s accumulator (`i` modulo the width).
+    pub fn lane(&self, i: usize) -> MeanVar {
+        MeanVar {
+            count: self.count,
+            shift: self.shift.lane(i),
+            mean: self.mean.lane(i),
+            m2: self.m2.lane(i),
         }
     }
 
-    /// Accumulator i (0 ≤ i < 8; larger i wrap).
-    pub fn lane(&self, i: usize) -> &MeanVar {
-        crate::lane::lane_ref(&self.lanes, i)
-    }
-
-    /// All eight merged, lane 0 first.
+    /// Every lane merged into one accumulator, lane 0 first.
     pub fn reduce(&self) -> MeanVar {
         let mut all = MeanVar::new();
-        for lane in &self.lanes {
-            all.merge(lane);
+        for i in 0..W::WIDTH {
+            all.merge(&self.lane(i));
         }
         all
     }

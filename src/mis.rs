@@ -6,9 +6,8 @@
 //! [`balance`], [`power`] (β = 2), [`maximum`] and [`cutoff`] each take `(n_f, pdf_f, n_g, pdf_g)`
 //! and return the weight of technique f, whose contribution is a = n_f·pdf_f against
 //! b = n_g·pdf_g for g. Counts are floats, so one-sample MIS's selection probabilities fit too.
-//! Every function is generic over the lane: `f32`, [`F32x8`] (also reachable
-//! as [`mis::x8`](x8)) and `f64`, with the same operations in each, so packets equal scalars
-//! bit for bit.
+//! Every function is generic over the lane: `f32`, [`F32x8`](crate::x8::F32x8) and `f64`, with
+//! the same operations in each, so packets equal scalars bit for bit.
 //!
 //! **Ratio form.** The weights are written in r = min(a, b)/max(a, b) ∈ [0, 1]: with t = h(r)
 //! (h(r) = r for balance, r² for power), the larger contribution gets 1/(1 + t) and the smaller
@@ -46,16 +45,11 @@
 //! [`OptimalMis`] fits the optimal weights of Kondapaneni et al. (2019) for two techniques from
 //! the samples themselves, with a closed-form 2×2 solve and no allocation; [`FixedAlpha`] is its
 //! unbiased form. [`Reservoir`] is resampled importance sampling's weighted reservoir (Talbot et
-//! al. 2005), driven by one u. Their packet forms keep one accumulator or reservoir per lane.
+//! al. 2005), driven by one u. Both sum in f64 and are generic over the f64 lane: `f64`, or
+//! [`F64x8`] for one accumulator or reservoir per packet lane.
 
-use crate::lane::{F32x8, F64x4, Lane, Lane32, U32Lane, U32x8, lane_ref, zip_map};
+use crate::lane::{F64x8, Lane, Lane32, Lanes, U32Lane, U32x8, zip_map};
 use crate::warp::ONE_MINUS_EPS;
-
-/// The packet forms, on [`F32x8`]: the same generic functions.
-pub mod x8 {
-    pub use super::{OptimalMisX8 as OptimalMis, ReservoirX8 as Reservoir};
-    pub use super::{balance, balance_n, cutoff, maximum, one_sample, power, power_n};
-}
 
 /// Where f's weight is decided without a ratio: NaN, zero or negative inputs, and ∞.
 #[inline(always)]
@@ -270,11 +264,14 @@ fn pick<L: Lane>(m: L::Mask, a: (L, L, L), b: (L, L, L)) -> (L, L, L) {
 /// - [`estimate`](Self::estimate), the direct estimate: α from the same samples. The residual sum
 ///   then vanishes exactly (Σₖnₖpₖ/S = 1), so F = α₁ + α₂. It is consistent, with a bias of
 ///   order 1/N that is not small for few samples: on the 1D integrands of
-///   `tests/all/estimate/mis_estimators.rs` it measured −2.7 % to −14 % of the integral at 4 samples per
-///   technique, −0.48 % to −2.3 % at 16 and −0.10 % to −0.44 % at 64 (0 where f lies in the span
-///   of the pdfs). Accumulate over many estimates, or use the unbiased form, where that matters.
+///   `tests/all/estimate/mis_estimators.rs` it measured −2.7 % to −14 % of the integral at 4
+///   samples per technique, −0.48 % to −2.3 % at 16 and −0.10 % to −0.44 % at 64 (0 where f lies
+///   in the span of the pdfs). Accumulate over many estimates, or use the unbiased form, where
+///   that matters.
 /// - [`FixedAlpha`], the unbiased form: α fixed beforehand (from a pilot pass with this
-///   accumulator, or from an analytic value), and the residual sum kept.
+///   accumulator, or from an analytic value), and the residual sum kept;
+///   [`estimate_with_alpha_of`](Self::estimate_with_alpha_of) does the same with α from another
+///   accumulator.
 ///
 /// **Fallback.** When the system is singular (one technique never produced a positive pdf, or the
 /// two pdfs are proportional over the samples: det ≤ 1e-9·A₁₁A₂₂), there is no control variate to
@@ -284,18 +281,19 @@ fn pick<L: Lane>(m: L::Mask, a: (L, L, L), b: (L, L, L)) -> (L, L, L) {
 /// against the pdfs) are counted but contribute nothing. The estimate is therefore finite unless
 /// the sums of finite terms themselves overflow; it is never NaN.
 ///
-/// Sums are in f64. The packet form is [`OptimalMisX8`].
+/// **Widths.** Sums are in f64, over the f64 lane `W`: `OptimalMis` (`W = f64`) is one
+/// accumulator, `OptimalMis<F64x8>` eight, one per packet lane, pushed by the same generic code,
+/// so lane i equals a scalar accumulator given lane i's samples, bit for bit
+/// ([`lane`](Self::lane)), and the sums vectorise.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct OptimalMis {
+pub struct OptimalMis<W = f64> {
     counts: [f64; 2],
     samples: u64,
-    sums: Sums<f64>,
+    sums: Sums<W>,
 }
 
-/// The sums of optimal MIS, lane by lane: `f64` for [`OptimalMis`], two [`F64x4`] for the eight
-/// lanes of [`OptimalMisX8`], pushed by one generic function so that the lanes equal the scalar
-/// accumulator bit for bit.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// The sums of optimal MIS, lane by lane.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 struct Sums<W> {
     /// Â₁₁, Â₁₂, Â₂₂.
     a: [W; 3],
@@ -304,17 +302,6 @@ struct Sums<W> {
     balance: W,
     /// Σ p₁/S, Σ p₂/S: with `balance`, the residual sum for any α (it is linear in α).
     q: [W; 2],
-}
-
-impl<W: Lane> Default for Sums<W> {
-    fn default() -> Self {
-        Self {
-            a: [W::ZERO; 3],
-            b: [W::ZERO; 2],
-            balance: W::ZERO,
-            q: [W::ZERO; 2],
-        }
-    }
 }
 
 impl<W: Lane> Sums<W> {
@@ -338,31 +325,100 @@ impl<W: Lane> Sums<W> {
         add(&mut self.q[0], q1);
         add(&mut self.q[1], q2);
     }
+
+    /// Lane `i` of every sum.
+    fn lane(&self, i: usize) -> Sums<f64>
+    where
+        W: Lanes<Scalar = f64>,
+    {
+        let at = |w: W| w.lane(i);
+        Sums {
+            a: self.a.map(at),
+            b: self.b.map(at),
+            balance: at(self.balance),
+            q: self.q.map(at),
+        }
+    }
 }
 
-impl OptimalMis {
-    /// An empty accumulator for techniques taking `n1` and `n2` samples per estimate (fractions
-    /// such as one-sample MIS's selection probabilities are allowed). Negative or NaN counts act
-    /// as 0.
+impl<W: Lanes<Scalar = f64>> OptimalMis<W> {
+    /// An empty accumulator (per lane) for techniques taking `n1` and `n2` samples per estimate
+    /// (fractions such as one-sample MIS's selection probabilities are allowed). Negative or NaN
+    /// counts act as 0.
     pub fn new(n1: f64, n2: f64) -> Self {
         Self {
             counts: counts(n1, n2),
-            ..Self::default()
+            samples: 0,
+            sums: Sums {
+                a: [W::ZERO; 3],
+                b: [W::ZERO; 2],
+                balance: W::ZERO,
+                q: [W::ZERO; 2],
+            },
         }
     }
 
-    /// One sample, from either technique: its integrand value f and both techniques' pdfs at it.
+    /// One sample per lane, from either technique: its integrand value f and both techniques'
+    /// pdfs at it.
     #[inline]
-    pub fn push(&mut self, f: f64, pdf1: f64, pdf2: f64) {
+    pub fn push(&mut self, f: W, pdf1: W, pdf2: W) {
         self.samples += 1;
         self.sums.push(self.counts, f, pdf1, pdf2);
     }
 
-    /// The samples pushed so far.
+    /// The samples pushed so far (per lane).
     pub fn samples(&self) -> u64 {
         self.samples
     }
 
+    /// Lane `i`'s accumulator (`i` modulo the width).
+    pub fn lane(&self, i: usize) -> OptimalMis {
+        OptimalMis {
+            counts: self.counts,
+            samples: self.samples,
+            sums: self.sums.lane(i),
+        }
+    }
+
+    /// The balance-heuristic estimate from the same samples: Σf/S over the rounds of n₁ + n₂
+    /// samples seen. 0 before any sample.
+    pub fn balance_estimate(&self) -> W {
+        W::from_fn(|i| {
+            let l = self.lane(i);
+            per_round(l.sums.balance, l.samples, l.counts)
+        })
+    }
+
+    /// The direct optimal-MIS estimate α₁ + α₂ (consistent, bias of order 1/N), or the balance
+    /// estimate where the system is singular.
+    pub fn estimate(&self) -> W {
+        W::from_fn(|i| {
+            let l = self.lane(i);
+            match l.alpha() {
+                Some([a1, a2]) => a1 + a2,
+                None => per_round(l.sums.balance, l.samples, l.counts),
+            }
+        })
+    }
+
+    /// The unbiased estimate from this accumulator's samples with α fitted on `pilot`'s, which
+    /// must be independent of them: α₁ + α₂ + Σ(f − α₁p₁ − α₂p₂)/S per round, as
+    /// [`FixedAlpha`] computes it (the residual is linear in α, so the sums kept here suffice).
+    /// Where `pilot`'s system is singular, α = 0: the balance estimate. Lane by lane.
+    ///
+    /// Cross-fitting, two halves each the pilot of the other, gives an unbiased optimal-MIS
+    /// estimate from one set of samples with no pilot pass.
+    pub fn estimate_with_alpha_of(&self, pilot: &Self) -> W {
+        W::from_fn(|i| {
+            let (l, p) = (self.lane(i), pilot.lane(i));
+            let [a1, a2] = p.alpha().unwrap_or([0.0, 0.0]);
+            let residual = l.sums.balance - a1 * l.sums.q[0] - a2 * l.sums.q[1];
+            a1 + a2 + per_round(residual, l.samples, l.counts)
+        })
+    }
+}
+
+impl OptimalMis {
     /// The solved α, or `None` where the system is singular (see the type's documentation).
     pub fn alpha(&self) -> Option<[f64; 2]> {
         // Cramer's rule on A/ka and b/kb, whose entries are at most 1, so that no product
@@ -387,34 +443,6 @@ impl OptimalMis {
             (a11 * b2 - a12 * b1) / det * scale,
         ];
         (regular && alpha.iter().all(|x| x.is_finite())).then_some(alpha)
-    }
-
-    /// The balance-heuristic estimate from the same samples: Σf/S over the rounds of n₁ + n₂
-    /// samples seen. 0 before any sample.
-    pub fn balance_estimate(&self) -> f64 {
-        per_round(self.sums.balance, self.samples, self.counts)
-    }
-
-    /// The direct optimal-MIS estimate α₁ + α₂ (consistent, bias of order 1/N), or the balance
-    /// estimate where the system is singular.
-    pub fn estimate(&self) -> f64 {
-        match self.alpha() {
-            Some([a1, a2]) => a1 + a2,
-            None => self.balance_estimate(),
-        }
-    }
-
-    /// The unbiased estimate from this accumulator's samples with α fitted on `pilot`'s, which
-    /// must be independent of them: α₁ + α₂ + Σ(f − α₁p₁ − α₂p₂)/S per round, as
-    /// [`FixedAlpha`] computes it (the residual is linear in α, so the sums kept here suffice).
-    /// Where `pilot`'s system is singular, α = 0: the balance estimate.
-    ///
-    /// Cross-fitting, two halves each the pilot of the other, gives an unbiased optimal-MIS
-    /// estimate from one set of samples with no pilot pass.
-    pub fn estimate_with_alpha_of(&self, pilot: &OptimalMis) -> f64 {
-        let [a1, a2] = pilot.alpha().unwrap_or([0.0, 0.0]);
-        let residual = self.sums.balance - a1 * self.sums.q[0] - a2 * self.sums.q[1];
-        a1 + a2 + per_round(residual, self.samples, self.counts)
     }
 }
 
@@ -478,88 +506,6 @@ fn per_round(sum: f64, samples: u64, counts: [f64; 2]) -> f64 {
     if rounds > 0.0 { sum / rounds } else { 0.0 }
 }
 
-/// Eight [`OptimalMis`] accumulators, one per packet lane, summed in two [`F64x4`] halves by
-/// the same generic code as the scalar accumulator: lane i equals an `OptimalMis` given lane
-/// i's samples, bit for bit, and the sums vectorise.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct OptimalMisX8 {
-    counts: [f64; 2],
-    samples: u64,
-    halves: [Sums<F64x4>; 2],
-}
-
-impl Default for OptimalMisX8 {
-    fn default() -> Self {
-        Self::new(0.0, 0.0)
-    }
-}
-
-impl OptimalMisX8 {
-    /// Eight empty accumulators with the same counts.
-    pub fn new(n1: f64, n2: f64) -> Self {
-        Self {
-            counts: counts(n1, n2),
-            samples: 0,
-            halves: [Sums::default(); 2],
-        }
-    }
-
-    /// Lane i of each argument goes to accumulator i.
-    #[inline]
-    pub fn push(&mut self, f: F32x8, pdf1: F32x8, pdf2: F32x8) {
-        self.samples += 1;
-        let (f, p1, p2) = (widen(f), widen(pdf1), widen(pdf2));
-        for (((half, f), p1), p2) in self.halves.iter_mut().zip(f).zip(p1).zip(p2) {
-            half.push(self.counts, f, p1, p2);
-        }
-    }
-
-    /// Accumulator i (0 ≤ i < 8; larger i wrap).
-    pub fn lane(&self, i: usize) -> OptimalMis {
-        let [lo, hi] = &self.halves;
-        let (h, j) = (if i & 4 == 0 { lo } else { hi }, i & 3);
-        let at = |w: F64x4| {
-            let [x0, x1, x2, x3] = w.to_array();
-            [x0, x1, x2, x3].get(j).copied().unwrap_or(x0)
-        };
-        OptimalMis {
-            counts: self.counts,
-            samples: self.samples,
-            sums: Sums {
-                a: h.a.map(at),
-                b: h.b.map(at),
-                balance: at(h.balance),
-                q: h.q.map(at),
-            },
-        }
-    }
-
-    /// Each lane's direct estimate.
-    pub fn estimate(&self) -> [f64; 8] {
-        core::array::from_fn(|i| self.lane(i).estimate())
-    }
-
-    /// Each lane's balance estimate.
-    pub fn balance_estimate(&self) -> [f64; 8] {
-        core::array::from_fn(|i| self.lane(i).balance_estimate())
-    }
-
-    /// Each lane's [`OptimalMis::estimate_with_alpha_of`] with the same lane of `pilot`.
-    pub fn estimate_with_alpha_of(&self, pilot: &OptimalMisX8) -> [f64; 8] {
-        core::array::from_fn(|i| self.lane(i).estimate_with_alpha_of(&pilot.lane(i)))
-    }
-}
-
-/// Eight f32 lanes as two halves of four f64 lanes (exact).
-#[inline(always)]
-fn widen(x: F32x8) -> [F64x4; 2] {
-    let x = x.to_array().map(f64::from);
-    [
-        F64x4::new([x[0], x[1], x[2], x[3]]),
-        F64x4::new([x[4], x[5], x[6], x[7]]),
-    ]
-}
-
 // ---------------------------------------------------------------------------------------------
 // Resampled importance sampling
 
@@ -575,47 +521,94 @@ fn widen(x: F32x8) -> [F64x4; 2] {
 /// [`chosen`](Self::chosen) returns y and the RIS weight (1/p̂(y))·(1/M)·Σw: the estimate is
 /// f(y) times it, unbiased when p̂ > 0 wherever f ≠ 0. A candidate with a zero, negative or NaN
 /// target or pdf has weight 0: it is never kept but still counts in M.
+///
+/// **Widths.** Generic over the f64 lane `W` like [`OptimalMis`]: `Reservoir<T>` keeps any
+/// `Copy` candidate; `Reservoir<U32x8, F64x8>` is eight reservoirs offered the same candidate
+/// indices with per-lane targets and pdfs, each lane equal to a scalar reservoir of its values,
+/// bit for bit ([`lane`](Self::lane)).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Reservoir<T> {
-    u: f64,
-    total: f64,
+pub struct Reservoir<T, W = f64> {
+    u: W,
+    total: W,
     count: u32,
-    kept: Option<(T, f64)>,
+    kept: T,
+    /// p̂ of the kept candidate; 0 while none is kept.
+    target: W,
 }
 
-impl<T: Copy> Reservoir<T> {
-    /// An empty reservoir driven by `u` ∈ [0, 1) (clamped; NaN acts as 0).
-    pub fn new(u: f32) -> Self {
-        let u = if u > 0.0 {
-            f64::from(u.min(ONE_MINUS_EPS))
-        } else {
-            0.0
-        };
+/// A candidate a [`Reservoir`] can keep lane by lane: chosen between two by the mask `M` of the
+/// reservoir's lane. Every `Copy` type is one for the scalar reservoir; [`U32x8`] (candidate
+/// indices) for the eight-lane one.
+pub trait Candidate<M>: Copy {
+    /// One lane's candidate.
+    type Scalar: Copy;
+    /// `a` where `m` is set, else `b`, per lane.
+    fn pick(m: M, a: Self, b: Self) -> Self;
+    /// Lane `i`'s candidate (`i` modulo the width). Named apart from [`Lanes::lane`] because
+    /// every `Copy` type is a candidate.
+    fn in_lane(self, i: usize) -> Self::Scalar;
+}
+
+impl<T: Copy> Candidate<bool> for T {
+    type Scalar = T;
+    #[inline(always)]
+    fn pick(m: bool, a: T, b: T) -> T {
+        if m { a } else { b }
+    }
+    #[inline(always)]
+    fn in_lane(self, _i: usize) -> T {
+        self
+    }
+}
+
+impl Candidate<F64x8> for U32x8 {
+    type Scalar = u32;
+    #[inline(always)]
+    fn pick(m: F64x8, a: U32x8, b: U32x8) -> U32x8 {
+        let bits = m.to_bitmask();
+        let m = U32x8::new(core::array::from_fn(|i| 0u32.wrapping_sub((bits >> i) & 1)));
+        (a & m) | (b & !m)
+    }
+    #[inline(always)]
+    fn in_lane(self, i: usize) -> u32 {
+        crate::lane::lane_of(&self.to_array(), i)
+    }
+}
+
+impl<T, W> Reservoir<T, W>
+where
+    W: Lanes<Scalar = f64>,
+    T: Candidate<W::Mask> + Default,
+{
+    /// An empty reservoir (per lane) driven by `u` ∈ [0, 1) (clamped to [0, 1 − 2⁻²⁴]; NaN acts
+    /// as 0).
+    pub fn new(u: W) -> Self {
+        let one_minus_eps = W::c(f64::from(ONE_MINUS_EPS));
         Self {
-            u,
-            total: 0.0,
+            u: W::select(u.gt(W::ZERO), u.min(one_minus_eps), W::ZERO),
+            total: W::ZERO,
             count: 0,
-            kept: None,
+            kept: T::default(),
+            target: W::ZERO,
         }
     }
 
-    /// Offers a candidate drawn with density `pdf`, whose target is `target` (p̂, unnormalised).
+    /// Offers a candidate drawn with density `pdf`, whose target is `target` (p̂, unnormalised),
+    /// and returns the lanes that keep it.
     #[inline]
-    pub fn push(&mut self, candidate: T, target: f64, pdf: f64) {
+    pub fn push(&mut self, candidate: T, target: W, pdf: W) -> W::Mask {
         self.count += 1;
         let w = target / pdf;
-        if !(target > 0.0 && pdf > 0.0 && w.is_finite()) {
-            return;
-        }
+        let ok = target.gt(W::ZERO) & pdf.gt(W::ZERO) & w.is_finite();
         let before = self.total;
-        self.total += w;
+        self.total = W::select(ok, self.total + w, self.total);
         let x = self.u * self.total;
-        if x < w {
-            self.kept = Some((candidate, target));
-            self.u = x / w;
-        } else {
-            self.u = ((x - w) / before).min(f64::from(ONE_MINUS_EPS));
-        }
+        let take = ok & x.lt(w);
+        let rest = ((x - w) / before).min(W::c(f64::from(ONE_MINUS_EPS)));
+        self.u = W::select(take, x / w, W::select(ok, rest, self.u));
+        self.kept = T::pick(take, candidate, self.kept);
+        self.target = W::select(take, target, self.target);
+        take
     }
 
     /// The candidates offered so far, M.
@@ -623,48 +616,22 @@ impl<T: Copy> Reservoir<T> {
         self.count
     }
 
-    /// The kept candidate and its RIS weight Σw/(M·p̂(y)); `None` if no candidate had a positive
-    /// weight.
-    pub fn chosen(&self) -> Option<(T, f64)> {
-        self.kept
-            .map(|(y, target)| (y, self.total / (f64::from(self.count) * target)))
+    /// The kept candidate and its RIS weight Σw/(M·p̂(y)); where no candidate had a positive
+    /// weight, `T::default()` and weight 0.
+    pub fn chosen(&self) -> (T, W) {
+        let kept = self.target.gt(W::ZERO);
+        let weight = self.total / (W::c(f64::from(self.count)) * self.target);
+        (self.kept, W::select(kept, weight, W::ZERO))
     }
-}
 
-/// One [`Reservoir`] per packet lane, keeping candidate indices.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ReservoirX8 {
-    lanes: [Reservoir<u32>; 8],
-}
-
-impl ReservoirX8 {
-    /// Eight empty reservoirs, lane i driven by lane i of `u`.
-    pub fn new(u: F32x8) -> Self {
-        Self {
-            lanes: u.to_array().map(Reservoir::new),
+    /// Lane `i`'s reservoir (`i` modulo the width).
+    pub fn lane(&self, i: usize) -> Reservoir<T::Scalar> {
+        Reservoir {
+            u: self.u.lane(i),
+            total: self.total.lane(i),
+            count: self.count,
+            kept: self.kept.in_lane(i),
+            target: self.target.lane(i),
         }
-    }
-
-    /// Offers candidate `index` to every lane, with each lane's target and pdf.
-    #[inline]
-    pub fn push(&mut self, index: u32, target: F32x8, pdf: F32x8) {
-        let (t, p) = (target.to_array(), pdf.to_array());
-        for ((r, t), p) in self.lanes.iter_mut().zip(t).zip(p) {
-            r.push(index, f64::from(t), f64::from(p));
-        }
-    }
-
-    /// Each lane's kept index and RIS weight: index 0 and weight 0 where nothing was kept.
-    pub fn chosen(&self) -> (U32x8, F32x8) {
-        let c = self.lanes.map(|r| r.chosen().unwrap_or((0, 0.0)));
-        (
-            U32x8::new(c.map(|x| x.0)),
-            F32x8::new(c.map(|x| x.1 as f32)),
-        )
-    }
-
-    /// Lane i's reservoir (0 ≤ i < 8; larger i wrap).
-    pub fn lane(&self, i: usize) -> &Reservoir<u32> {
-        lane_ref(&self.lanes, i)
     }
 }

@@ -4,9 +4,9 @@
 use glam::Vec3;
 
 use super::MAX_SAMPLES;
-use crate::lane::{F32x8, Lane, Lane32, lane_of, zip_map};
+use crate::lane::{F32x8, Lane, Lane32, U32x8, Widen};
 use crate::math::Math;
-use crate::mis::{self, OptimalMis};
+use crate::mis::Candidate;
 use crate::point::Point3;
 use crate::scene::{Light, LightChoice, PowerTable};
 use crate::x8::Vec3x8;
@@ -220,91 +220,38 @@ mod sealed {
     impl Sealed for crate::lane::F32x8 {}
 }
 
-/// The widths the estimator runs in: `f32` and [`F32x8`]. Per-lane work (the light choice, the
-/// f64 accumulators of optimal MIS and RIS) goes through these lanes one at a time, with the
-/// scalar code.
-pub trait DirectLane: Math + Lane32 + sealed::Sealed {
-    /// The number of lanes.
-    const WIDTH: usize;
-    /// Lane i.
-    fn lane(self, i: usize) -> f32;
-    /// The lanes f(0), f(1), ….
-    fn from_fn(f: impl FnMut(usize) -> f32) -> Self;
+/// The widths the estimator runs in: `f32` and [`F32x8`]. Per-lane work (the light choice) goes
+/// through the lanes one at a time ([`Lanes`](crate::lane::Lanes)); the accumulators of optimal MIS and RIS sum in
+/// the f64 lane of the same width ([`Widen`]).
+pub trait DirectLane: Math + Lane32 + Widen + sealed::Sealed {
+    /// The candidate index a RIS reservoir keeps per lane: `u32` or [`U32x8`].
+    type Index: Candidate<<Self::Wide as Lane>::Mask> + Default;
+    /// Index `s` in every lane.
+    fn index(s: u32) -> Self::Index;
     /// The number of lanes set in `m`.
     fn count(m: Self::Mask) -> u32;
-
-    /// Optimal MIS's accumulator of one colour channel at this width: [`OptimalMis`] or
-    /// [`mis::OptimalMisX8`], the same sums lane by lane.
-    type Optimal: Copy;
-    /// An empty accumulator for counts n₁, n₂.
-    fn optimal(n1: f64, n2: f64) -> Self::Optimal;
-    /// One sample per lane.
-    fn optimal_push(acc: &mut Self::Optimal, f: Self, pdf1: Self, pdf2: Self);
-    /// Cross-fitted: the mean of a's estimate with α from b and b's with α from a.
-    fn optimal_cross(a: &Self::Optimal, b: &Self::Optimal) -> Self;
-    /// The balance heuristic's estimate.
-    fn optimal_balance(a: &Self::Optimal) -> Self;
 }
 
 impl DirectLane for f32 {
-    const WIDTH: usize = 1;
+    type Index = u32;
     #[inline(always)]
-    fn lane(self, _i: usize) -> f32 {
-        self
-    }
-    #[inline(always)]
-    fn from_fn(mut f: impl FnMut(usize) -> f32) -> Self {
-        f(0)
+    fn index(s: u32) -> u32 {
+        s
     }
     #[inline(always)]
     fn count(m: bool) -> u32 {
         u32::from(m)
     }
-
-    type Optimal = OptimalMis;
-    fn optimal(n1: f64, n2: f64) -> OptimalMis {
-        OptimalMis::new(n1, n2)
-    }
-    #[inline(always)]
-    fn optimal_push(acc: &mut OptimalMis, f: f32, pdf1: f32, pdf2: f32) {
-        acc.push(f64::from(f), f64::from(pdf1), f64::from(pdf2));
-    }
-    fn optimal_cross(a: &OptimalMis, b: &OptimalMis) -> f32 {
-        (0.5 * (a.estimate_with_alpha_of(b) + b.estimate_with_alpha_of(a))) as f32
-    }
-    fn optimal_balance(a: &OptimalMis) -> f32 {
-        a.balance_estimate() as f32
-    }
 }
 
 impl DirectLane for F32x8 {
-    const WIDTH: usize = 8;
+    type Index = U32x8;
     #[inline(always)]
-    fn lane(self, i: usize) -> f32 {
-        lane_of(&self.to_array(), i)
-    }
-    #[inline(always)]
-    fn from_fn(f: impl FnMut(usize) -> f32) -> Self {
-        F32x8::new(core::array::from_fn(f))
+    fn index(s: u32) -> U32x8 {
+        U32x8::splat(s)
     }
     #[inline(always)]
     fn count(m: F32x8) -> u32 {
         m.to_bitmask().count_ones()
-    }
-
-    type Optimal = mis::OptimalMisX8;
-    fn optimal(n1: f64, n2: f64) -> mis::OptimalMisX8 {
-        mis::OptimalMisX8::new(n1, n2)
-    }
-    #[inline(always)]
-    fn optimal_push(acc: &mut mis::OptimalMisX8, f: F32x8, pdf1: F32x8, pdf2: F32x8) {
-        acc.push(f, pdf1, pdf2);
-    }
-    fn optimal_cross(a: &mis::OptimalMisX8, b: &mis::OptimalMisX8) -> F32x8 {
-        let (ab, ba) = (a.estimate_with_alpha_of(b), b.estimate_with_alpha_of(a));
-        F32x8::new(zip_map(ab, ba, |x, y| (0.5 * (x + y)) as f32))
-    }
-    fn optimal_balance(a: &mis::OptimalMisX8) -> F32x8 {
-        F32x8::new(a.balance_estimate().map(|x| x as f32))
     }
 }

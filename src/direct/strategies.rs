@@ -3,9 +3,9 @@
 
 use super::estimator::{Estimator, Sampled, mul, per_count, scale_div};
 use super::{DirectLane, OPTIMAL_MIN_SAMPLES, Strategy, Visibility};
-use crate::lane::{Mask, U32Lane, V2, V3, lane_of};
+use crate::lane::{Lane, Mask, U32Lane, V2, V3};
 use crate::math::Math;
-use crate::mis::{self, Reservoir};
+use crate::mis::{self, OptimalMis, Reservoir};
 use crate::point::{Point2, Point3};
 use crate::scene::{Bsdf, luminance};
 use crate::seq::Samples;
@@ -211,14 +211,14 @@ where
                 (f64::from(nl), f64::from(nb))
             }
         };
-        // Per half, one accumulator per colour channel.
+        // Per half, one accumulator per colour channel, in the f64 lane of this width.
         let [mut acc0, mut acc1] = [0, 1].map(|k| {
             let (a, b) = fold_counts(k);
-            [L::optimal(a, b); 3]
+            [OptimalMis::<L::Wide>::new(a, b); 3]
         });
-        let push = |acc: &mut [L::Optimal; 3], f: V3<L>, pl: L, pb: L| {
+        let push = |acc: &mut [OptimalMis<L::Wide>; 3], f: V3<L>, pl: L, pb: L| {
             for (a, f) in acc.iter_mut().zip([f.x, f.y, f.z]) {
-                L::optimal_push(a, f, pl, pb);
+                a.push(f.widen(), pl.widen(), pb.widen());
             }
         };
         let second = |j: u32| cross && j % 2 == 1;
@@ -248,12 +248,13 @@ where
             let f = V3::select(w.gt(L::ZERO), scale_div(kept, w / pb), V3::all(L::ZERO));
             push(if second(j) { &mut acc1 } else { &mut acc0 }, f, pl, pb);
         }
-        let est = |a: &L::Optimal, b: &L::Optimal| {
-            if cross {
-                L::optimal_cross(a, b)
+        let est = |a: &OptimalMis<L::Wide>, b: &OptimalMis<L::Wide>| {
+            L::narrow(if cross {
+                // Each half's estimate with α from the other, averaged.
+                (a.estimate_with_alpha_of(b) + b.estimate_with_alpha_of(a)) * L::Wide::HALF
             } else {
-                L::optimal_balance(a)
-            }
+                a.balance_estimate()
+            })
         };
         let ([x0, x1, x2], [y0, y1, y2]) = (&acc0, &acc1);
         V3::new(est(x0, y0), est(x1, y1), est(x2, y2))
@@ -264,28 +265,19 @@ where
     pub(super) fn ris(&mut self) -> V3<L> {
         let n = self.n_light + self.n_bsdf;
         let u = self.u(0, 2).x;
-        let mut res: [Reservoir<u32>; 8] = core::array::from_fn(|i| Reservoir::new(u.lane(i)));
+        let mut res = Reservoir::<L::Index, L::Wide>::new(u.widen());
         let zero = V3::all(L::ZERO);
         let (mut c, mut to) = (zero, zero);
         for s in 0..n {
             let x = self.light_sample(s);
             let target = luminance(x.fcos_le);
-            let mut kept = [0.0f32; 8];
-            for (i, (r, k)) in res.iter_mut().zip(&mut kept).enumerate().take(L::WIDTH) {
-                r.push(s, f64::from(target.lane(i)), f64::from(x.pdf.lane(i)));
-                // The reservoir holds candidate s only if it has just taken it.
-                *k = if r.chosen().is_some_and(|(y, _)| y == s) {
-                    1.0
-                } else {
-                    0.0
-                };
-            }
-            let m = L::from_fn(|i| lane_of(&kept, i)).gt(L::ZERO);
+            let taken = res.push(L::index(s), target.widen(), x.pdf.widen());
+            let m = L::narrow_mask(taken);
             c = V3::select(m, x.fcos_le, c);
             to = V3::select(m, x.to, to);
         }
         // The RIS weight Σw/(M·p̂(y)): 0 where no candidate had weight.
-        let w = L::from_fn(|i| lane_of(&res, i).chosen().map_or(0.0, |(_, w)| w as f32));
+        let w = L::narrow(res.chosen().1);
         let ru = self.u(0, 1).y;
         self.shadow(c.scale(w), to, ru)
     }

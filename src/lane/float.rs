@@ -9,10 +9,10 @@ use wide::u32x8;
 /// or clear. Re-exported as [`crate::x8::F32x8`].
 pub type F32x8 = wide::f32x8;
 
-/// Four f64 lanes (`wide::f64x4`): the accumulators of packet estimators (optimal MIS), which sum
-/// in f64 as their scalar twins do, lane by lane with the same operations. Masks are `F64x4`
-/// values with all bits set or clear.
-pub type F64x4 = wide::f64x4;
+/// Eight f64 lanes (`wide::f64x8`): the packet accumulators (mean and variance, optimal MIS,
+/// the RIS reservoir), which sum in f64 as the scalar accumulators do, lane by lane with the same
+/// operations. Masks are `F64x8` values with all bits set or clear.
+pub type F64x8 = wide::f64x8;
 
 /// A lane-wise boolean: `bool` for scalar lanes, an all-ones/all-zeros bit pattern for packets.
 pub trait Mask:
@@ -38,10 +38,10 @@ impl Mask for F32x8 {
     }
 }
 
-impl Mask for F64x4 {
+impl Mask for F64x8 {
     inline_fns! {
-        fn any(self) -> bool { F64x4::any(self) }
-        fn all(self) -> bool { F64x4::all(self) }
+        fn any(self) -> bool { F64x8::any(self) }
+        fn all(self) -> bool { F64x8::all(self) }
     }
 }
 
@@ -346,29 +346,106 @@ impl Lane for f64 {
 }
 
 // ---------------------------------------------------------------------------------------------
-// F64x4: packet accumulators
+// F64x8: packet accumulators
 
 /// Lane-wise the f64 instance's operations, except `mul_add`, which is unfused here: packet
 /// accumulators do not use it.
-impl Lane for F64x4 {
-    type Mask = F64x4;
-    const ZERO: Self = F64x4::new([0.0; 4]);
-    const ONE: Self = F64x4::new([1.0; 4]);
-    const TWO: Self = F64x4::new([2.0; 4]);
-    const HALF: Self = F64x4::new([0.5; 4]);
-    const EPSILON: Self = F64x4::new([f64::EPSILON; 4]);
+impl Lane for F64x8 {
+    type Mask = F64x8;
+    const ZERO: Self = F64x8::new([0.0; 8]);
+    const ONE: Self = F64x8::new([1.0; 8]);
+    const TWO: Self = F64x8::new([2.0; 8]);
+    const HALF: Self = F64x8::new([0.5; 8]);
+    const EPSILON: Self = F64x8::new([f64::EPSILON; 8]);
 
     inline_fns! {
-        fn c(x: f64) -> Self { F64x4::splat(x) }
+        fn c(x: f64) -> Self { F64x8::splat(x) }
         fn mul_add(self, b: Self, c: Self) -> Self { self * b + c }
-        fn sqrt(self) -> Self { F64x4::sqrt(self) }
-        fn abs(self) -> Self { F64x4::abs(self) }
-        fn copysign(self, sign: Self) -> Self { F64x4::abs(self) | (sign & F64x4::splat(-0.0)) }
-        fn lt(self, o: Self) -> F64x4 { self.simd_lt(o) }
-        fn le(self, o: Self) -> F64x4 { self.simd_le(o) }
-        fn gt(self, o: Self) -> F64x4 { self.simd_gt(o) }
-        fn ge(self, o: Self) -> F64x4 { self.simd_ge(o) }
-        fn eq(self, o: Self) -> F64x4 { self.simd_eq(o) }
-        fn select(m: F64x4, a: Self, b: Self) -> Self { m.select(a, b) }
+        fn sqrt(self) -> Self { F64x8::sqrt(self) }
+        fn abs(self) -> Self { F64x8::abs(self) }
+        fn copysign(self, sign: Self) -> Self { F64x8::abs(self) | (sign & F64x8::splat(-0.0)) }
+        fn lt(self, o: Self) -> F64x8 { self.simd_lt(o) }
+        fn le(self, o: Self) -> F64x8 { self.simd_le(o) }
+        fn gt(self, o: Self) -> F64x8 { self.simd_gt(o) }
+        fn ge(self, o: Self) -> F64x8 { self.simd_ge(o) }
+        fn eq(self, o: Self) -> F64x8 { self.simd_eq(o) }
+        fn select(m: F64x8, a: Self, b: Self) -> Self { m.select(a, b) }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Lane by lane
+
+/// A lane read and built one lane at a time: the bridge from a packet to per-lane scalar work
+/// (a light choice, an accumulator's final division).
+pub trait Lanes: Lane {
+    /// The number of lanes.
+    const WIDTH: usize;
+    /// One lane's value: `f32` or `f64`.
+    type Scalar: Copy + Default;
+    /// Lane `i` (`i` is reduced modulo the width, so there is no panic path).
+    fn lane(self, i: usize) -> Self::Scalar;
+    /// The lanes f(0), f(1), ….
+    fn from_fn(f: impl FnMut(usize) -> Self::Scalar) -> Self;
+}
+
+macro_rules! scalar_lanes {
+    ($($t:ty),*) => {$(
+        impl Lanes for $t {
+            const WIDTH: usize = 1;
+            type Scalar = $t;
+            inline_fns! {
+                fn lane(self, _i: usize) -> $t { self }
+                fn from_fn(mut f: impl FnMut(usize) -> $t) -> Self { f(0) }
+            }
+        }
+    )*};
+}
+scalar_lanes!(f32, f64);
+
+macro_rules! packet_lanes {
+    ($($t:ty: $s:ty),*) => {$(
+        impl Lanes for $t {
+            const WIDTH: usize = 8;
+            type Scalar = $s;
+            inline_fns! {
+                fn lane(self, i: usize) -> $s { super::lane_of(&self.to_array(), i) }
+                fn from_fn(f: impl FnMut(usize) -> $s) -> Self { <$t>::new(core::array::from_fn(f)) }
+            }
+        }
+    )*};
+}
+packet_lanes!(F32x8: f32, F64x8: f64);
+
+/// An f32 lane and the f64 lane of the same width that accumulators sum it in: `f32` → `f64`,
+/// [`F32x8`] → [`F64x8`]. Widening is exact; narrowing rounds each lane to nearest.
+pub trait Widen: Lanes<Scalar = f32> {
+    /// The f64 lane of the same width.
+    type Wide: Lanes<Scalar = f64>;
+    /// Each lane as f64, exactly.
+    fn widen(self) -> Self::Wide;
+    /// Each lane rounded to f32.
+    fn narrow(w: Self::Wide) -> Self;
+    /// The same lanes set, as a mask of this lane.
+    fn narrow_mask(m: <Self::Wide as Lane>::Mask) -> Self::Mask;
+}
+
+impl Widen for f32 {
+    type Wide = f64;
+    inline_fns! {
+        fn widen(self) -> f64 { f64::from(self) }
+        fn narrow(w: f64) -> f32 { w as f32 }
+        fn narrow_mask(m: bool) -> bool { m }
+    }
+}
+
+impl Widen for F32x8 {
+    type Wide = F64x8;
+    inline_fns! {
+        fn widen(self) -> F64x8 { F64x8::from_fn(|i| f64::from(self.lane(i))) }
+        fn narrow(w: F64x8) -> F32x8 { F32x8::from_fn(|i| w.lane(i) as f32) }
+        fn narrow_mask(m: F64x8) -> F32x8 {
+            F32x8::narrow(F64x8::select(m, F64x8::ONE, F64x8::ZERO)).gt(F32x8::ZERO)
+        }
     }
 }

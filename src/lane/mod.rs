@@ -23,7 +23,8 @@
 //! # Files
 //!
 //! - `float`: [`Lane`] (arithmetic, compares to a [`Mask`], selects) for `f32`, [`F32x8`] and
-//!   `f64`;
+//!   `f64`, and [`F64x8`] for the packet accumulators; [`Lanes`], lane-by-lane access, and
+//!   [`Widen`], an f32 lane with the f64 lane of its width;
 //! - `int`: [`U32Lane`], the 32-bit integer lane of the same two widths (`u32`, [`U32x8`]) that
 //!   the sequence generators use, and [`Lane32`], the f32 lanes with their bits in it. It stands
 //!   on `float`, which needs no integer lane, so the files import in one direction;
@@ -44,7 +45,7 @@ mod int;
 mod vector;
 
 pub(crate) use float::sqrt_f64;
-pub use float::{F32x8, F64x4, Lane, Mask};
+pub use float::{F32x8, F64x8, Lane, Lanes, Mask, Widen};
 pub use int::{Lane32, U32Lane, U32x8};
 pub use vector::{V2, V3};
 
@@ -69,10 +70,4 @@ pub(crate) fn zip_map<A, B, C: Copy + Default, const N: usize>(
 pub(crate) fn lane_of<T: Copy>(a: &[T; 8], i: usize) -> T {
     // The fallback is unreachable (i & 7 < 8), and the compiler drops it.
     a.get(i & 7).copied().unwrap_or(a[0])
-}
-
-/// A reference to element `i mod 8`, as [`lane_of`].
-#[inline(always)]
-pub(crate) fn lane_ref<T>(a: &[T; 8], i: usize) -> &T {
-    a.get(i & 7).unwrap_or(&a[0])
 }

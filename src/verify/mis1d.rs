@@ -180,12 +180,13 @@ pub fn compare(integrand: &Integrand, n: usize, rounds: usize, seed: u64) -> [Me
             }
         }
         let ris = |m: usize, uniform: &mut dyn FnMut() -> f64| {
-            let mut r = Reservoir::new(uniform() as f32);
+            let mut r = Reservoir::new(f64::from(uniform() as f32));
             for _ in 0..m {
                 let x = uniform();
                 r.push(x, pdf2(x), pdf1(x));
             }
-            r.chosen().map_or(0.0, |(y, w)| f(y) * w)
+            let (y, w) = r.chosen();
+            if w > 0.0 { f(y) * w } else { 0.0 }
         };
         let ris_one = ris(2 * n, &mut uniform);
         let ris_many = (0..2 * n).map(|_| ris(2 * n, &mut uniform)).sum::<f64>() / (2.0 * nf);

@@ -3,8 +3,9 @@
 //! Veach's V + (1/q − 1)E[F²]) and splitting (mean unchanged, the optimal count).
 
 use crate::common::TestRng;
-use mcsample::estimate::{self, MeanVar, MeanVarX8, ROULETTE_Q_MIN};
+use mcsample::estimate::{self, MeanVar, ROULETTE_Q_MIN};
 use mcsample::lane::F32x8;
+use mcsample::lane::{F64x8, Widen};
 
 /// The reference: the mean by Neumaier's compensated sum (a plain f64 sum of 10⁷ values near
 /// 1e9 loses the fractions: its ulp at 1e16 is 2), then Σ(x − mean)².
@@ -126,19 +127,19 @@ fn merge_equals_one_stream_and_counts_do_not_wrap() {
 #[test]
 fn packet_accumulators() {
     let mut rng = TestRng::new(22);
-    let mut packet = MeanVarX8::new();
+    let mut packet = MeanVar::<F64x8>::new();
     let mut lanes = [MeanVar::new(); 8];
     let mut all = MeanVar::new();
     for _ in 0..10_000 {
         let x: [f32; 8] = core::array::from_fn(|_| rng.u01() * 100.0 + 1e4);
-        packet.push(F32x8::new(x));
+        packet.push(F32x8::new(x).widen());
         for i in 0..8 {
             lanes[i].push(x[i] as f64);
             all.push(x[i] as f64);
         }
     }
     for (i, lane) in lanes.iter().enumerate() {
-        assert_eq!(packet.lane(i), lane);
+        assert_eq!(packet.lane(i), *lane);
     }
     let r = packet.reduce();
     assert_eq!(r.count(), all.count());

@@ -7,9 +7,10 @@
 
 use crate::common::TestRng;
 use mcsample::estimate::MeanVar;
-use mcsample::lane::F32x8;
+use mcsample::lane::{F32x8, F64x8, Lanes, Widen};
 use mcsample::mis::{self, FixedAlpha, OptimalMis, Reservoir};
 use mcsample::verify::chi2_sf;
+use mcsample::x8::U32x8;
 
 use mcsample::verify::mis1d::{self, INTEGRANDS, exact_alpha, pdf1 as p1, pdf2 as p2};
 
@@ -164,7 +165,7 @@ fn optimal_mis_fallback_and_packets() {
     assert_eq!((bad.samples(), bad.estimate(), bad.alpha()), (4, 0.0, None));
 
     let mut rng = TestRng::new(40);
-    let mut packet = mis::x8::OptimalMis::new(2.0, 1.0);
+    let mut packet = OptimalMis::<F64x8>::new(2.0, 1.0);
     let mut lanes = [OptimalMis::new(2.0, 1.0); 8];
     // Mostly ordinary values, and in one draw of four each lane's value is special (NaN, ±∞,
     // 0, negative, huge, subnormal), so the lanes skip samples independently.
@@ -181,14 +182,21 @@ fn optimal_mis_fallback_and_packets() {
             })
         };
         let (f, a, b) = (draw(&mut rng), draw(&mut rng), draw(&mut rng));
-        packet.push(F32x8::new(f), F32x8::new(a), F32x8::new(b));
+        packet.push(
+            F32x8::new(f).widen(),
+            F32x8::new(a).widen(),
+            F32x8::new(b).widen(),
+        );
         for (i, lane) in lanes.iter_mut().enumerate() {
             lane.push(f[i] as f64, a[i] as f64, b[i] as f64);
         }
     }
     for (i, lane) in lanes.iter().enumerate() {
         assert_eq!(packet.lane(i), *lane);
-        assert_eq!(packet.estimate()[i].to_bits(), lane.estimate().to_bits());
+        assert_eq!(
+            packet.estimate().lane(i).to_bits(),
+            lane.estimate().to_bits()
+        );
     }
 }
 
@@ -203,12 +211,13 @@ fn ris_is_unbiased_and_improves_with_m() {
         let mut rng = TestRng::new(seed);
         let mut acc = MeanVar::new();
         for _ in 0..100_000 {
-            let mut r = Reservoir::new(rng.u01());
+            let mut r = Reservoir::new(f64::from(rng.u01()));
             for _ in 0..m {
                 let x = rng.u01() as f64;
                 r.push(x, target(x), 1.0);
             }
-            let (y, w) = r.chosen().expect("p̂ > 0 everywhere");
+            let (y, w) = r.chosen();
+            assert!(w > 0.0, "p̂ > 0 everywhere");
             let w = if broken { 1.0 / target(y) } else { w };
             acc.push(f(y) * w);
         }
@@ -239,12 +248,13 @@ fn chi2_against_target(m: u32, seed: u64) -> f64 {
     let mut rng = TestRng::new(seed);
     let n = 20_000;
     for _ in 0..n {
-        let mut r = Reservoir::new(rng.u01());
+        let mut r = Reservoir::new(f64::from(rng.u01()));
         for _ in 0..m {
             let x = rng.u01() as f64;
             r.push(x, target(x), 1.0);
         }
-        let (y, _) = r.chosen().unwrap();
+        let (y, w) = r.chosen();
+        assert!(w > 0.0);
         counts[((y * bins as f64) as usize).min(bins - 1)] += 1;
     }
     let mut chi2 = 0.0;
@@ -276,12 +286,13 @@ fn reservoir_choice_is_stratified_and_robust() {
     let k = 4000;
     let mut kept = [0u32; 6];
     for j in 0..k {
-        let mut r = Reservoir::new((j as f32 + 0.5) / k as f32);
+        let mut r = Reservoir::new(f64::from((j as f32 + 0.5) / k as f32));
         for (i, &w) in weights.iter().enumerate() {
             r.push(i, w, 1.0);
         }
         assert_eq!(r.count(), 6);
-        let (i, weight) = r.chosen().unwrap();
+        let (i, weight) = r.chosen();
+        assert!(weight > 0.0);
         assert!((weight - sum / (6.0 * weights[i])).abs() < 1e-12);
         kept[i] += 1;
     }
@@ -298,29 +309,44 @@ fn reservoir_choice_is_stratified_and_robust() {
         );
     }
     let mut empty = Reservoir::new(0.5);
-    empty.push(0u8, 0.0, 1.0);
+    empty.push(7u8, 0.0, 1.0);
     empty.push(1u8, 1.0, 0.0);
     empty.push(2u8, -1.0, 1.0);
-    assert_eq!(empty.chosen(), None);
+    empty.push(3u8, f64::NAN, 1.0);
+    assert_eq!(
+        empty.chosen(),
+        (0, 0.0),
+        "nothing kept: the default candidate, weight 0"
+    );
 
     let mut rng = TestRng::new(72);
     let u: [f32; 8] = core::array::from_fn(|_| rng.u01());
-    let mut packet = mis::x8::Reservoir::new(F32x8::new(u));
-    let mut lanes = u.map(Reservoir::new);
+    let mut packet = Reservoir::<U32x8, F64x8>::new(F32x8::new(u).widen());
+    let mut lanes = u.map(|u| Reservoir::new(f64::from(u)));
     for idx in 0..50u32 {
         let t: [f32; 8] = core::array::from_fn(|_| rng.u01());
         let p: [f32; 8] = core::array::from_fn(|_| rng.u01() + 0.1);
-        packet.push(idx, F32x8::new(t), F32x8::new(p));
+        let taken = packet.push(
+            U32x8::splat(idx),
+            F32x8::new(t).widen(),
+            F32x8::new(p).widen(),
+        );
         for i in 0..8 {
-            lanes[i].push(idx, t[i] as f64, p[i] as f64);
+            let took = lanes[i].push(idx, t[i] as f64, p[i] as f64);
+            assert_eq!(
+                (taken.to_bitmask() >> i) & 1 == 1,
+                took,
+                "lane {i} at {idx}"
+            );
         }
     }
     let (index, weight) = packet.chosen();
     for (i, lane) in lanes.iter().enumerate() {
-        assert_eq!(packet.lane(i), lane);
-        let (y, w) = lane.chosen().unwrap();
+        assert_eq!(packet.lane(i), *lane);
+        let (y, w) = lane.chosen();
+        assert!(w > 0.0);
         assert_eq!(index.to_array()[i], y);
-        assert_eq!(weight.to_array()[i], w as f32);
+        assert_eq!(weight.to_array()[i].to_bits(), w.to_bits());
     }
 }
 

@@ -7,7 +7,7 @@
 //! - Outputs are f32 in [0, 1) with 24 significant bits: the generator's 32-bit value `x` becomes
 //!   `(x >> 8) · 2⁻²⁴`, which is never 1.0, including at index 2³² − 1 (whereas `x · 2⁻³²` rounds
 //!   to 1.0 for `x ≥ 2³² − 128`).
-//! - Each generator is one generic function over the index lane [`U32Lane`]: a `u32` index gives
+//! - Each generator is one generic function over the index lane [`U32Lane`](crate::lane::U32Lane): a `u32` index gives
 //!   one value (`f32`, or [`glam::Vec2`] for the 2D generators), a [`U32x8`](crate::x8::U32x8)
 //!   of indices gives eight ([`F32x8`](crate::x8::F32x8), [`Vec2x8`](crate::x8::Vec2x8)), with
 //!   the same scalar `u32` dimension and seed; lane *i* of the packet result equals the scalar
@@ -49,7 +49,6 @@ mod samples;
 mod sobol;
 mod stratify;
 
-pub use crate::lane::U32Lane;
 pub(crate) use hash::lowbias32;
 pub use hash::{hash3, independent};
 pub use samples::{Generator, Samples, Sequence};

@@ -3,7 +3,8 @@
 
 use crate::common::TestRng;
 use glam::DVec2;
-use mcsample::seq::{self, U32Lane};
+use mcsample::lane::U32Lane;
+use mcsample::seq;
 use mcsample::verify::{ChiSquare, check_lanes};
 use mcsample::x8::U32x8;
 

@@ -4,7 +4,7 @@
 use glam::Vec3;
 
 use super::MAX_SAMPLES;
-use crate::lane::{F32x8, Lane, Lane32, U32x8, Widen};
+use crate::lane::{F32x8, Lane, Lane32, Lanes, U32x8};
 use crate::math::Math;
 use crate::mis::Candidate;
 use crate::point::Point3;
@@ -222,8 +222,8 @@ mod sealed {
 
 /// The widths the estimator runs in: `f32` and [`F32x8`]. Per-lane work (the light choice) goes
 /// through the lanes one at a time ([`Lanes`](crate::lane::Lanes)); the accumulators of optimal MIS and RIS sum in
-/// the f64 lane of the same width ([`Widen`]).
-pub trait DirectLane: Math + Lane32 + Widen + sealed::Sealed {
+/// the f64 lane of the same width ([`Widen`](crate::lane::Widen)).
+pub trait DirectLane: Math + Lane32 + Lanes<Scalar = f32> + sealed::Sealed {
     /// The candidate index a RIS reservoir keeps per lane: `u32` or [`U32x8`].
     type Index: Candidate<<Self::Wide as Lane>::Mask> + Default;
     /// Index `s` in every lane.

@@ -417,14 +417,15 @@ macro_rules! packet_lanes {
 }
 packet_lanes!(F32x8: f32, F64x8: f64);
 
-/// An f32 lane and the f64 lane of the same width that accumulators sum it in: `f32` → `f64`,
-/// [`F32x8`] → [`F64x8`]. Widening is exact; narrowing rounds each lane to nearest.
-pub trait Widen: Lanes<Scalar = f32> {
+/// A lane and the f64 lane of the same width: `f32` → `f64`, [`F32x8`] → [`F64x8`], and `f64` →
+/// itself. Accumulators sum in it, and set-up terms that cancel in f32 are computed in it.
+/// Widening is exact; narrowing rounds each lane to nearest.
+pub trait Widen: Lanes {
     /// The f64 lane of the same width.
     type Wide: Lanes<Scalar = f64>;
     /// Each lane as f64, exactly.
     fn widen(self) -> Self::Wide;
-    /// Each lane rounded to f32.
+    /// Each lane rounded to this lane's precision.
     fn narrow(w: Self::Wide) -> Self;
     /// The same lanes set, as a mask of this lane.
     fn narrow_mask(m: <Self::Wide as Lane>::Mask) -> Self::Mask;
@@ -447,5 +448,14 @@ impl Widen for F32x8 {
         fn narrow_mask(m: F64x8) -> F32x8 {
             F32x8::narrow(F64x8::select(m, F64x8::ONE, F64x8::ZERO)).gt(F32x8::ZERO)
         }
+    }
+}
+
+impl Widen for f64 {
+    type Wide = f64;
+    inline_fns! {
+        fn widen(self) -> f64 { self }
+        fn narrow(w: f64) -> f64 { w }
+        fn narrow_mask(m: bool) -> bool { m }
     }
 }

@@ -44,7 +44,6 @@ mod float;
 mod int;
 mod vector;
 
-pub(crate) use float::sqrt_f64;
 pub use float::{F32x8, F64x8, Lane, Lanes, Mask, Widen};
 pub use int::{Lane32, U32Lane, U32x8};
 pub use vector::{V2, V3};

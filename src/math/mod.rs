@@ -103,11 +103,11 @@ pub mod exp;
 pub mod log;
 pub mod trig;
 
-use crate::lane::{F32x8, Lane, inline_fns};
+use crate::lane::{F32x8, Lane, Widen, inline_fns};
 
 /// The transcendental functions of a lane: the crate's own polynomials for `f32` and [`F32x8`],
 /// libm for the `f64` reference. Warps are generic over `L: Math`.
-pub trait Math: Lane {
+pub trait Math: Widen {
     /// sin and cos, within the table's bound for |x| ≤ 6433.
     fn sin_cos(self) -> (Self, Self);
     /// sin and cos of 2π·self, with exact range reduction in `self`.
@@ -132,113 +132,6 @@ pub trait Math: Lane {
     fn ln_1p(self) -> Self;
     /// e^self − 1, accurate near 0.
     fn exp_m1(self) -> Self;
-    /// The terms of Van Oosterom–Strackee's solid angle of triangle (a, b, c) seen from the
-    /// origin, computed in f64 for the f32 lanes: `(n, h, t, d)` with
-    /// - n = (b − a) × (c − a), the plane's normal, unnormalised;
-    /// - h = a·n, the plane offset (six times the signed volume of the
-    ///   tetrahedron with the origin);
-    /// - t = h / (|a||b||c|) and d = 1 + â·b̂ + â·ĉ + b̂·ĉ, so that Ω = 2·atan2(|t|, d).
-    ///
-    /// In f32, h carries an error of ε|a||b − a||c − a|, which relative to h is ε over the sine
-    /// of the tilt (4e-3 of Ω for a triangle seen 1e-5 rad from edge-on), and d cancels for a
-    /// wide triangle with nearly opposite vertices (2e-5 of Ω). The products of f32 values are
-    /// exact in f64, so here each result is within an ulp or two of its exact value for the
-    /// given vertices. Every lane performs the same f64 operations in the same order, with no
-    /// FMA, so both f32 widths agree bit for bit.
-    fn triangle_terms(a: [Self; 3], b: [Self; 3], c: [Self; 3]) -> ([Self; 3], Self, Self, Self);
-    /// a × b, its products exact and its differences rounded in f64 for the f32 lanes, then
-    /// rounded once to the lane: each component within about an ulp of the true one, however
-    /// nearly parallel a and b are (an f32 cross product of directions 1e-6 apart keeps only
-    /// one digit of its direction). The same bits in both f32 widths.
-    fn cross_wide(a: [Self; 3], b: [Self; 3]) -> [Self; 3];
-    /// a·b, its products exact and its sum in f64 for the f32 lanes, rounded once: accurate
-    /// where the f32 dot product cancels (a direction nearly in a light's plane against the
-    /// plane's normal). The same bits in both f32 widths.
-    fn dot_wide(a: [Self; 3], b: [Self; 3]) -> Self;
-    /// w·((b − a) × (c − a)) in f64 for the f32 lanes, rounded once: the cosine (times twice
-    /// the area) between a direction and the plane of triangle (a, b, c), accurate when w lies
-    /// nearly in the plane, where rounding the normal to f32 first would cost ε over that
-    /// cosine. The same bits in both f32 widths.
-    fn plane_dot(w: [Self; 3], a: [Self; 3], b: [Self; 3], c: [Self; 3]) -> Self;
-}
-
-/// a × b in one arithmetic, in a fixed order with no FMA.
-#[inline(always)]
-fn cross_in<T: Wide>(a: [T; 3], b: [T; 3]) -> [T; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-/// [`Math::triangle_terms`] in one arithmetic, the operations in a fixed order (no FMA), so
-/// that every lane type that runs it in f64 rounds identically.
-#[inline(always)]
-fn triangle_terms_in<T: Wide>(a: [T; 3], b: [T; 3], c: [T; 3]) -> ([T; 3], T, T, T) {
-    let sub = |p: [T; 3], q: [T; 3]| [p[0] - q[0], p[1] - q[1], p[2] - q[2]];
-    let dot = |p: [T; 3], q: [T; 3]| p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
-    // n and h = v·n from the vertex v nearest the shading point, as the base of both edges:
-    // rounding n costs h |v|·err(n), and err(n) grows with the edges' lengths, so from a vertex
-    // far beyond the others h lost 1.2e-5 of itself even in f64 for a light seen nearly edge-on,
-    // and Ω depended on the vertices' order (found by the `spherical` fuzz target). A cyclic
-    // relabelling keeps n's orientation.
-    let (qa, qb, qc) = (dot(a, a), dot(b, b), dot(c, c));
-    let pick = |m: (T, T), p: [T; 3], q: [T; 3]| {
-        let s = |x: T, y: T| T::select_lt(m.0, m.1, x, y);
-        [s(p[0], q[0]), s(p[1], q[1]), s(p[2], q[2])]
-    };
-    // (a, b, c), or (b, c, a) where b is nearer than a, then (c, a, b) where c is nearer still.
-    let b_nearer = (qb, qa);
-    let (v0, v1, v2) = (
-        pick(b_nearer, b, a),
-        pick(b_nearer, c, b),
-        pick(b_nearer, a, c),
-    );
-    let c_nearest = (qc, T::select_lt(qb, qa, qb, qa));
-    let (v0, v1, v2) = (
-        pick(c_nearest, c, v0),
-        pick(c_nearest, a, v1),
-        pick(c_nearest, b, v2),
-    );
-    let n = cross_in(sub(v1, v0), sub(v2, v0));
-    let h = dot(v0, n);
-    let (la, lb, lc) = (qa.sqrt(), qb.sqrt(), qc.sqrt());
-    let d = la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la;
-    let s = la * lb * lc;
-    (n, h, h / s, d / s)
-}
-
-/// [`Math::plane_dot`] in one arithmetic.
-#[inline(always)]
-fn plane_dot_in<T: Wide>(w: [T; 3], a: [T; 3], b: [T; 3], c: [T; 3]) -> T {
-    let sub = |p: [T; 3], q: [T; 3]| [p[0] - q[0], p[1] - q[1], p[2] - q[2]];
-    let n = cross_in(sub(b, a), sub(c, a));
-    w[0] * n[0] + w[1] * n[1] + w[2] * n[2]
-}
-
-/// The arithmetic the wide evaluations need.
-trait Wide:
-    Copy
-    + core::ops::Add<Output = Self>
-    + core::ops::Sub<Output = Self>
-    + core::ops::Mul<Output = Self>
-    + core::ops::Div<Output = Self>
-{
-    fn sqrt(self) -> Self;
-    /// `x` where `a < b`, else `y` (so `y` where either is NaN).
-    fn select_lt(a: Self, b: Self, x: Self, y: Self) -> Self;
-}
-
-impl Wide for f64 {
-    #[inline(always)]
-    fn sqrt(self) -> f64 {
-        crate::lane::sqrt_f64(self)
-    }
-    #[inline(always)]
-    fn select_lt(a: f64, b: f64, x: f64, y: f64) -> f64 {
-        core::hint::select_unpredictable(a < b, x, y)
-    }
 }
 
 /// Both f32 lanes run the same generic polynomials, which is what makes them agree bit for bit.
@@ -258,122 +151,8 @@ macro_rules! own_math {
                 fn ln_1p(self) -> Self { log::ln_1p(self) }
                 fn exp_m1(self) -> Self { exp::exp_m1(self) }
             }
-            #[inline(always)]
-            fn triangle_terms(
-                a: [Self; 3],
-                b: [Self; 3],
-                c: [Self; 3],
-            ) -> ([Self; 3], Self, Self, Self) {
-                let w = <$t as Widen>::widen;
-                let r = <$t as Widen>::narrow;
-                let (n, h, t, d) = triangle_terms_in(a.map(w), b.map(w), c.map(w));
-                (n.map(r), r(h), r(t), r(d))
-            }
-            #[inline(always)]
-            fn plane_dot(w: [Self; 3], a: [Self; 3], b: [Self; 3], c: [Self; 3]) -> Self {
-                let x = <$t as Widen>::widen;
-                <$t as Widen>::narrow(plane_dot_in(w.map(x), a.map(x), b.map(x), c.map(x)))
-            }
-            #[inline(always)]
-            fn dot_wide(a: [Self; 3], b: [Self; 3]) -> Self {
-                let w = <$t as Widen>::widen;
-                let (a, b) = (a.map(w), b.map(w));
-                <$t as Widen>::narrow(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])
-            }
-            #[inline(always)]
-            fn cross_wide(a: [Self; 3], b: [Self; 3]) -> [Self; 3] {
-                let w = <$t as Widen>::widen;
-                cross_in(a.map(w), b.map(w)).map(<$t as Widen>::narrow)
-            }
         }
     };
-}
-
-/// The f64 arithmetic of the f32 lanes ([`Math::plane_offset`], [`Math::cross_wide`]): f32 for
-/// f32, and for `F32x8` a pair of four-lane f64 vectors, whose IEEE operations round each lane
-/// as the scalar f64 would.
-trait Widen: Sized {
-    type Wide: Wide;
-    fn widen(self) -> Self::Wide;
-    fn narrow(w: Self::Wide) -> Self;
-}
-
-impl Widen for f32 {
-    type Wide = f64;
-    #[inline(always)]
-    fn widen(self) -> f64 {
-        f64::from(self)
-    }
-    #[inline(always)]
-    fn narrow(w: f64) -> f32 {
-        w as f32
-    }
-}
-
-/// Eight f32 lanes as two halves of four f64 lanes.
-#[derive(Clone, Copy)]
-struct F64x8(wide::f64x4, wide::f64x4);
-
-impl core::ops::Add for F64x8 {
-    type Output = Self;
-    #[inline(always)]
-    fn add(self, o: Self) -> Self {
-        F64x8(self.0 + o.0, self.1 + o.1)
-    }
-}
-impl core::ops::Sub for F64x8 {
-    type Output = Self;
-    #[inline(always)]
-    fn sub(self, o: Self) -> Self {
-        F64x8(self.0 - o.0, self.1 - o.1)
-    }
-}
-impl core::ops::Div for F64x8 {
-    type Output = Self;
-    #[inline(always)]
-    fn div(self, o: Self) -> Self {
-        F64x8(self.0 / o.0, self.1 / o.1)
-    }
-}
-impl Wide for F64x8 {
-    #[inline(always)]
-    fn sqrt(self) -> Self {
-        F64x8(self.0.sqrt(), self.1.sqrt())
-    }
-    #[inline(always)]
-    fn select_lt(a: Self, b: Self, x: Self, y: Self) -> Self {
-        F64x8(
-            a.0.simd_lt(b.0).select(x.0, y.0),
-            a.1.simd_lt(b.1).select(x.1, y.1),
-        )
-    }
-}
-impl core::ops::Mul for F64x8 {
-    type Output = Self;
-    #[inline(always)]
-    fn mul(self, o: Self) -> Self {
-        F64x8(self.0 * o.0, self.1 * o.1)
-    }
-}
-
-impl Widen for F32x8 {
-    type Wide = F64x8;
-    #[inline(always)]
-    fn widen(self) -> F64x8 {
-        let x = self.to_array().map(f64::from);
-        F64x8(
-            wide::f64x4::from([x[0], x[1], x[2], x[3]]),
-            wide::f64x4::from([x[4], x[5], x[6], x[7]]),
-        )
-    }
-    #[inline(always)]
-    fn narrow(w: F64x8) -> F32x8 {
-        let (lo, hi) = (w.0.to_array(), w.1.to_array());
-        F32x8::from([
-            lo[0] as f32, lo[1] as f32, lo[2] as f32, lo[3] as f32, hi[0] as f32, hi[1] as f32,
-            hi[2] as f32, hi[3] as f32,
-        ])
-    }
 }
 
 own_math!(f32);
@@ -405,22 +184,6 @@ impl Math for f64 {
         fn exp(self) -> Self { libm::exp(self) }
         fn ln_1p(self) -> Self { libm::log1p(self) }
         fn exp_m1(self) -> Self { libm::expm1(self) }
-    }
-    #[inline(always)]
-    fn triangle_terms(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> ([f64; 3], f64, f64, f64) {
-        triangle_terms_in(a, b, c)
-    }
-    #[inline(always)]
-    fn plane_dot(w: [f64; 3], a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> f64 {
-        plane_dot_in(w, a, b, c)
-    }
-    #[inline(always)]
-    fn dot_wide(a: [f64; 3], b: [f64; 3]) -> f64 {
-        a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-    }
-    #[inline(always)]
-    fn cross_wide(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-        cross_in(a, b)
     }
 }
 

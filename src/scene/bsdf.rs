@@ -15,6 +15,7 @@ use crate::frame::Frame;
 use crate::lane::{V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
+use crate::warp::dot_wide;
 use crate::warp::{
     ONE_MINUS_EPS, cosine_hemisphere, cosine_hemisphere_pdf, phong_lobe, phong_lobe_density,
 };
@@ -199,7 +200,7 @@ fn mirror<L: Math>(wo: V3<L>) -> V3<L> {
 fn lobe_pdf<L: Math>(wo: V3<L>, wi: V3<L>, n: L) -> L {
     let d = V3::new(wi.x + wo.x, wi.y + wo.y, wi.z - wo.z);
     let t = L::HALF * d.dot(d);
-    let c = L::dot_wide([wi.x, wi.y, wi.z], [-wo.x, -wo.y, wo.z]);
+    let c = dot_wide([wi.x, wi.y, wi.z], [-wo.x, -wo.y, wo.z]);
     // cos α ≤ 1 (rounding, or directions not quite unit, can exceed it): ln cos α ≤ 0.
     let ln_cos = L::select(t.lt(L::HALF), (-t).ln_1p(), c.ln()).min(L::ZERO);
     let p = phong_lobe_density(ln_cos, n);

@@ -10,6 +10,7 @@ use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::scene::{AreaSample, LightSample, area_sample, le_towards, light_sample, on_light};
 use crate::warp::concentric_disk;
+use crate::warp::dot_wide;
 
 /// A disk light of radius `radius` about `center`, facing along `normal` (normalised on use), and
 /// emitting radiance `le` on that side.
@@ -137,7 +138,7 @@ impl<V: Point3<Lane = L>, L: Math> PreparedDisk<V> {
     #[inline(always)]
     fn ray(&self, wi: V3<L>) -> (L, L, L::Mask) {
         let n = self.frame.n;
-        let wn = L::dot_wide([wi.x, wi.y, wi.z], [n.x, n.y, n.z]);
+        let wn = dot_wide([wi.x, wi.y, wi.z], [n.x, n.y, n.z]);
         let t = self.h / wn;
         // The hit's offset from the centre is n × (wi × d) / (wi·n): the component of wi × d
         // across n, with no cancellation between the long vectors t·wi and d.

@@ -11,6 +11,7 @@ use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::scene::{AreaSample, LightSample, area_sample, le_towards, light_sample, on_light};
 use crate::warp::{SphericalRectangle, SphericalTriangle, uniform_triangle};
+use crate::warp::{cross_wide, plane_dot};
 
 /// A triangle light with vertices `a`, `b`, `c`, emitting radiance `le` on the side of its
 /// normal (b − a) × (c − a): the side from which the vertices run counter-clockwise.
@@ -111,7 +112,7 @@ impl<V: Point3<Lane = L>, L: Math> PreparedTriangle<V> {
     fn eval(&self, wi: V3<L>) -> (L, L) {
         let (h, _) = self.tri.plane();
         let [a, b, c] = self.v;
-        let wn = L::plane_dot(
+        let wn = plane_dot(
             [wi.x, wi.y, wi.z],
             [a.x, a.y, a.z],
             [b.x, b.y, b.z],
@@ -239,12 +240,12 @@ impl<V: Point3<Lane = L>, L: Math> PreparedRectangle<V> {
 #[inline(always)]
 fn normal_dot<L: Math>(w: V3<L>, ex: V3<L>, ey: V3<L>) -> L {
     let z = [L::ZERO; 3];
-    L::plane_dot([w.x, w.y, w.z], z, [ex.x, ex.y, ex.z], [ey.x, ey.y, ey.z])
+    plane_dot([w.x, w.y, w.z], z, [ex.x, ex.y, ex.z], [ey.x, ey.y, ey.z])
 }
 
 /// p × q, in f64 for the f32 lanes.
 #[inline(always)]
 fn wide_cross<L: Math>(p: V3<L>, q: V3<L>) -> V3<L> {
-    let [x, y, z] = L::cross_wide([p.x, p.y, p.z], [q.x, q.y, q.z]);
+    let [x, y, z] = cross_wide([p.x, p.y, p.z], [q.x, q.y, q.z]);
     V3::new(x, y, z)
 }

@@ -1,8 +1,111 @@
-//! What the spherical triangle and rectangle share: Van Oosterom–Strackee solid angles and the
-//! area-to-solid-angle pdf of a planar light.
+//! What the spherical triangle and rectangle, and the planar lights, share: Van
+//! Oosterom–Strackee solid angles, the area-to-solid-angle pdf of a planar light, and the
+//! geometric terms that cancel in f32, computed in the f64 lane of the same width.
+//!
+//! Each f64 term takes f32 inputs, whose products are exact in f64, runs a fixed sequence of
+//! IEEE operations with no FMA, and rounds once to the lane: every lane of a packet performs the
+//! same operations as the scalar form, so both f32 widths agree bit for bit, and the f64 instance
+//! runs the same arithmetic as its reference.
 
-use crate::lane::{Mask, V3};
+use crate::lane::{Lane, Mask, V3};
 use crate::math::Math;
+
+/// The terms of Van Oosterom–Strackee's solid angle of triangle (a, b, c) seen from the origin,
+/// computed in f64: `(n, h, t, d)` with
+/// - n = (b − a) × (c − a), the plane's normal, unnormalised;
+/// - h = a·n, the plane offset (six times the signed volume of the tetrahedron with the origin);
+/// - t = h / (|a||b||c|) and d = 1 + â·b̂ + â·ĉ + b̂·ĉ, so that Ω = 2·atan2(|t|, d).
+///
+/// In f32, h carries an error of ε|a||b − a||c − a|, which relative to h is ε over the sine of
+/// the tilt (4e-3 of Ω for a triangle seen 1e-5 rad from edge-on), and d cancels for a wide
+/// triangle with nearly opposite vertices (2e-5 of Ω). In f64 each result is within an ulp or
+/// two of its exact value for the given vertices.
+#[inline(always)]
+pub(crate) fn triangle_terms<L: Math>(a: [L; 3], b: [L; 3], c: [L; 3]) -> ([L; 3], L, L, L) {
+    let w = |v: [L; 3]| v.map(L::widen);
+    let (n, h, t, d) = triangle_terms_in(w(a), w(b), w(c));
+    (n.map(L::narrow), L::narrow(h), L::narrow(t), L::narrow(d))
+}
+
+/// a × b in f64, rounded once to the lane: each component within about an ulp of the true one,
+/// however nearly parallel a and b are (an f32 cross product of directions 1e-6 apart keeps only
+/// one digit of its direction).
+#[inline(always)]
+pub(crate) fn cross_wide<L: Math>(a: [L; 3], b: [L; 3]) -> [L; 3] {
+    cross_in(a.map(L::widen), b.map(L::widen)).map(L::narrow)
+}
+
+/// a·b in f64, rounded once: accurate where the f32 dot product cancels (a direction nearly in a
+/// light's plane against the plane's normal).
+#[inline(always)]
+pub(crate) fn dot_wide<L: Math>(a: [L; 3], b: [L; 3]) -> L {
+    L::narrow(dot_in(a.map(L::widen), b.map(L::widen)))
+}
+
+/// w·((b − a) × (c − a)) in f64, rounded once: the cosine (times twice the area) between a
+/// direction and the plane of triangle (a, b, c), accurate when w lies nearly in the plane, where
+/// rounding the normal to f32 first would cost ε over that cosine.
+#[inline(always)]
+pub(crate) fn plane_dot<L: Math>(w: [L; 3], a: [L; 3], b: [L; 3], c: [L; 3]) -> L {
+    let x = |v: [L; 3]| v.map(L::widen);
+    let n = cross_in(sub_in(x(b), x(a)), sub_in(x(c), x(a)));
+    L::narrow(dot_in(x(w), n))
+}
+
+#[inline(always)]
+fn sub_in<T: Lane>(p: [T; 3], q: [T; 3]) -> [T; 3] {
+    [p[0] - q[0], p[1] - q[1], p[2] - q[2]]
+}
+
+#[inline(always)]
+fn dot_in<T: Lane>(p: [T; 3], q: [T; 3]) -> T {
+    p[0] * q[0] + p[1] * q[1] + p[2] * q[2]
+}
+
+/// a × b, in a fixed order with no FMA.
+#[inline(always)]
+fn cross_in<T: Lane>(a: [T; 3], b: [T; 3]) -> [T; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// [`triangle_terms`] in one arithmetic.
+#[inline(always)]
+fn triangle_terms_in<T: Lane>(a: [T; 3], b: [T; 3], c: [T; 3]) -> ([T; 3], T, T, T) {
+    // n and h = v·n from the vertex v nearest the shading point, as the base of both edges:
+    // rounding n costs h |v|·err(n), and err(n) grows with the edges' lengths, so from a vertex
+    // far beyond the others h would lose up to 1.2e-5 of itself even in f64 for a light seen
+    // nearly edge-on, and Ω would depend on the vertices' order. A cyclic relabelling keeps n's
+    // orientation.
+    let (qa, qb, qc) = (dot_in(a, a), dot_in(b, b), dot_in(c, c));
+    let select_lt = |a: T, b: T, x: T, y: T| T::select(a.lt(b), x, y);
+    let pick = |m: (T, T), p: [T; 3], q: [T; 3]| {
+        let s = |x: T, y: T| select_lt(m.0, m.1, x, y);
+        [s(p[0], q[0]), s(p[1], q[1]), s(p[2], q[2])]
+    };
+    // (a, b, c), or (b, c, a) where b is nearer than a, then (c, a, b) where c is nearer still.
+    let b_nearer = (qb, qa);
+    let (v0, v1, v2) = (
+        pick(b_nearer, b, a),
+        pick(b_nearer, c, b),
+        pick(b_nearer, a, c),
+    );
+    let c_nearest = (qc, select_lt(qb, qa, qb, qa));
+    let (v0, v1, v2) = (
+        pick(c_nearest, c, v0),
+        pick(c_nearest, a, v1),
+        pick(c_nearest, b, v2),
+    );
+    let n = cross_in(sub_in(v1, v0), sub_in(v2, v0));
+    let h = dot_in(v0, n);
+    let (la, lb, lc) = (qa.sqrt(), qb.sqrt(), qc.sqrt());
+    let d = la * lb * lc + dot_in(a, b) * lc + dot_in(a, c) * lb + dot_in(b, c) * la;
+    let s = la * lb * lc;
+    (n, h, h / s, d / s)
+}
 
 /// Solid angle of the triangle with vertices `a`, `b`, `c` seen from the origin, by
 /// Van Oosterom–Strackee: tan(Ω/2) = |a·(b×c)| / (|a||b||c| + (a·b)|c| + (a·c)|b| + (b·c)|a|).
@@ -33,7 +136,7 @@ pub(crate) fn vos_solid_angle<L: Math>(
 #[inline(always)]
 pub(crate) fn area_pdf_solid_angle<L: Math>(w: V3<L>, h: L, n: V3<L>, k: L) -> L {
     // In f64 for the f32 lanes: a direction nearly in the light's plane makes w·n cancel.
-    area_pdf_from_cos(L::dot_wide([w.x, w.y, w.z], [n.x, n.y, n.z]), h, k)
+    area_pdf_from_cos(dot_wide([w.x, w.y, w.z], [n.x, n.y, n.z]), h, k)
 }
 
 /// [`area_pdf_solid_angle`] from w·n, computed by the caller as accurately as it can: the pdf

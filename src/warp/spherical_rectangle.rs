@@ -59,6 +59,7 @@ use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::warp::common::clamp_u;
 use crate::warp::polygon::{area_pdf_solid_angle, pow2_scale};
+use crate::warp::polygon::{cross_wide, dot_wide, plane_dot};
 
 /// Below this solid angle (sr) the rectangle is sampled by area.
 ///
@@ -348,7 +349,7 @@ fn shifted_dot<L: Math>(p: V3<L>, e: V3<L>) -> L {
     let (x, xl) = two_sum(p.x, e.x);
     let (y, yl) = two_sum(p.y, e.y);
     let (z, zl) = two_sum(p.z, e.z);
-    L::dot_wide([x, y, z], [e.x, e.y, e.z]) + V3::new(xl, yl, zl).dot(e)
+    dot_wide([x, y, z], [e.x, e.y, e.z]) + V3::new(xl, yl, zl).dot(e)
 }
 
 #[inline(always)]
@@ -376,9 +377,9 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
         .into_iter()
         .fold(corner.dot(corner), |m, c| c.dot(c).min(m));
     let a = |v: V3<L>| [v.x, v.y, v.z];
-    let [nx, ny, nz] = L::cross_wide(a(ex), a(ey));
+    let [nx, ny, nz] = cross_wide(a(ex), a(ey));
     let n = V3::new(nx, ny, nz);
-    let h = L::plane_dot(a(corner), [L::ZERO; 3], a(ex), a(ey));
+    let h = plane_dot(a(corner), [L::ZERO; 3], a(ex), a(ey));
     let nn = n.dot(n);
     let d = h.abs() / nn.sqrt();
     // The foot of the perpendicular, the frame's origin: samples are formed from it, as
@@ -390,9 +391,9 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
     // The corner's coordinates: corner − foot = x0·x̂ + y0·ŷ, in the oblique frame should ex
     // and ey not be quite orthogonal (as f32 edges rarely are, to 1e-8), so that every sample
     // lies on the parallelogram given. Dot products in f64: they cancel for a far corner.
-    let xc = L::dot_wide(a(corner), a(ex)) / exl;
-    let yc = L::dot_wide(a(corner), a(ey)) / eyl;
-    let cos_xy = L::dot_wide(a(ex), a(ey)) / (exl * eyl);
+    let xc = dot_wide(a(corner), a(ex)) / exl;
+    let yc = dot_wide(a(corner), a(ey)) / eyl;
+    let cos_xy = dot_wide(a(ex), a(ey)) / (exl * eyl);
     let k = L::ONE / cos_xy.mul_add(-cos_xy, L::ONE);
     let x0 = cos_xy.mul_add(-yc, xc) * k;
     let y0 = cos_xy.mul_add(-xc, yc) * k;
@@ -440,7 +441,7 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
     // ε·|p|/d (the edge is nearly radial when the light is seen at a grazing angle), and the
     // slack would have to grow with it.
     let plane = |p: V3<L>, e: V3<L>| {
-        let [x, y, z] = L::cross_wide([p.x, p.y, p.z], [e.x, e.y, e.z]);
+        let [x, y, z] = cross_wide([p.x, p.y, p.z], [e.x, e.y, e.z]);
         let m = V3::new(x, y, z);
         m.scale(sign / m.length())
     };

@@ -13,6 +13,7 @@ use crate::warp::common::clamp_u;
 use crate::warp::polygon::{
     EdgePlanes, area_pdf_from_cos, needs_pow2_scale, pow2_scale, vos_solid_angle,
 };
+use crate::warp::polygon::{cross_wide, plane_dot, triangle_terms};
 use crate::warp::triangle::{uniform_triangle, uniform_triangle_inverse};
 
 /// Below this solid angle (sr) the triangle is sampled by area.
@@ -131,7 +132,7 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     // The plane, its offset and the solid angle in f64: in f32 they lose what the tilt loses
     // (4e-3 of Ω at 1e-5 rad from edge-on) and what nearly opposite vertices lose (2e-5).
     let ([nx, ny, nz], h, triple, den) =
-        L::triangle_terms([a.x, a.y, a.z], [b.x, b.y, b.z], [c.x, c.y, c.z]);
+        triangle_terms([a.x, a.y, a.z], [b.x, b.y, b.z], [c.x, c.y, c.z]);
     let n = V3::new(nx, ny, nz);
     let omega = L::TWO * triple.abs().atan2(den);
 
@@ -139,7 +140,7 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     // planes through A, in f64: an f32 cross product of nearly parallel or nearly opposite
     // vectors keeps few digits of its direction.
     let wide_cross = |p: V3<L>, q: V3<L>| {
-        let [x, y, z] = L::cross_wide([p.x, p.y, p.z], [q.x, q.y, q.z]);
+        let [x, y, z] = cross_wide([p.x, p.y, p.z], [q.x, q.y, q.z]);
         V3::new(x, y, z)
     };
     let nab = wide_cross(pa, pb);
@@ -297,7 +298,7 @@ fn arvo<L: Math>(s: &Setup<L>, u: V2<L>) -> V3<L> {
 #[inline(always)]
 fn barycentrics<L: Math>(w: V3<L>, s: &Setup<L>) -> (V3<L>, L::Mask) {
     let (a, b, c, n) = (s.a, s.b, s.c, s.n);
-    let wn = L::plane_dot(
+    let wn = plane_dot(
         [w.x, w.y, w.z],
         [a.x, a.y, a.z],
         [b.x, b.y, b.z],
@@ -426,7 +427,7 @@ impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
             // w·n from the vertices in f64: with n rounded to f32 first, the pdf of a direction
             // 1e-5 rad from the plane would be 5 % off.
             let (a, b, c) = (s.a, s.b, s.c);
-            let wn = L::plane_dot(
+            let wn = plane_dot(
                 [w.x, w.y, w.z],
                 [a.x, a.y, a.z],
                 [b.x, b.y, b.z],

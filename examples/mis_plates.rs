@@ -62,7 +62,7 @@ fn lights() -> [Light; 4] {
     [(3.75, 0.03), (1.25, 0.1), (-1.25, 0.3), (-3.75, 0.9)].map(|(x, r): (f32, f32)| {
         // Equal power: Le·r² the same for every light.
         let le = 0.81 / (r * r);
-        Light::Sphere(SphereLight::new(Vec3::new(x, 0.0, 0.0), r, Vec3::splat(le)))
+        Light::from(SphereLight::new(Vec3::new(x, 0.0, 0.0), r, Vec3::splat(le)))
     })
 }
 
@@ -97,11 +97,8 @@ fn hit_light(lights: &[Light], o: Vec3, d: Vec3) -> Option<(f32, Vec3)> {
     let mut best: Option<(f32, Vec3)> = None;
     for l in lights {
         let t = l.hit(o, d);
-        if let Light::Sphere(s) = l
-            && t.is_finite()
-            && best.is_none_or(|(b, _)| t < b)
-        {
-            best = Some((t, s.le));
+        if t.is_finite() && best.is_none_or(|(b, _)| t < b) {
+            best = Some((t, l.le));
         }
     }
     best

@@ -28,7 +28,7 @@ use crate::lane::{Lane, Lanes};
 ///
 /// ```
 /// use mcsample::estimate::MeanVar;
-/// let mut a = MeanVar::new();
+/// let mut a: MeanVar = MeanVar::new(); // f64; MeanVar::<F64x8> keeps eight
 /// for x in [1e8 + 1.0, 1e8 - 1.0, 1e8 + 1.0, 1e8 - 1.0] {
 ///     a.push(x);
 /// }

@@ -35,10 +35,10 @@ fuzz_target!(|data: &[u8]| {
     for k in 0..(kinds % 4) {
         let (a, b, c, r) = (v(9 + 3 * k as usize % 9), v(12), v(15), f[18]);
         lights.push(match (kinds >> (2 + 2 * k)) & 3 {
-            0 => Light::Sphere(SphereLight::new(a, r, le)),
-            1 => Light::Disk(DiskLight::new(a, b, r, le)),
-            2 => Light::Triangle(TriangleLight::new(a, b, c, le)),
-            _ => Light::Rectangle(RectangleLight::new(a, b, c - b * (c.dot(b) / b.length_squared()), le)),
+            0 => Light::from(SphereLight::new(a, r, le)),
+            1 => Light::from(DiskLight::new(a, b, r, le)),
+            2 => Light::from(TriangleLight::new(a, b, c, le)),
+            _ => Light::from(RectangleLight::new(a, b, c - b * (c.dot(b) / b.length_squared()), le)),
         });
     }
     let at = ShadingPoint { p: v(0), n: v(3), wo: v(6) };

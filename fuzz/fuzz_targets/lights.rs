@@ -27,14 +27,7 @@ fn bits(v: Vec3) -> [u32; 3] {
 
 /// The light with every parameter splatted across eight lanes.
 fn splat(l: &Light) -> Light<Vec3x8> {
-    let v = Vec3x8::splat;
-    let f = F32x8::splat;
-    match *l {
-        Light::Sphere(s) => Light::Sphere(SphereLight::new(v(s.center), f(s.radius), v(s.le))),
-        Light::Disk(d) => Light::Disk(DiskLight::new(v(d.center), v(d.normal), f(d.radius), v(d.le))),
-        Light::Triangle(t) => Light::Triangle(TriangleLight::new(v(t.v[0]), v(t.v[1]), v(t.v[2]), v(t.le))),
-        Light::Rectangle(r) => Light::Rectangle(RectangleLight::new(v(r.corner), v(r.ex), v(r.ey), v(r.le))),
-    }
+    l.splat()
 }
 
 fn check_light(l: &Light, p: Vec3, u: Vec2, w: Vec3, name: &str) {
@@ -92,11 +85,11 @@ fuzz_target!(|data: &[u8]| {
     // documented degenerate light, also exercised below).
     let ey = c - b * (c.dot(b) / b.length_squared());
     let lights = [
-        Light::Sphere(SphereLight::new(a, r, le)),
-        Light::Disk(DiskLight::new(a, b, r, le)),
-        Light::Triangle(TriangleLight::new(a, b, c, le)),
-        Light::Rectangle(RectangleLight::new(a, b, ey, le)),
-        Light::Rectangle(RectangleLight::new(a, b, c, le)),
+        Light::from(SphereLight::new(a, r, le)),
+        Light::from(DiskLight::new(a, b, r, le)),
+        Light::from(TriangleLight::new(a, b, c, le)),
+        Light::from(RectangleLight::new(a, b, ey, le)),
+        Light::from(RectangleLight::new(a, b, c, le)),
     ];
     for (i, l) in lights.iter().enumerate() {
         check_light(l, p, u, w, &format!("light {i}"));

@@ -96,7 +96,7 @@ where
     pub(super) fn prepared(&mut self, j: usize) -> &PreparedLight<V> {
         let p = V::from_lanes(self.p);
         // Out of range (never asked): a light that is on no direction.
-        let dark = Light::Sphere(scene::SphereLight::new(Vec3::ZERO, 0.0, Vec3::ZERO));
+        let dark = Light::from(scene::SphereLight::new(Vec3::ZERO, 0.0, Vec3::ZERO));
         let light = self.lights.lights().get(j).copied().unwrap_or(dark);
         let prepare = || light.splat::<V>().at(p);
         match self.cache.get_mut(j) {

@@ -1,19 +1,21 @@
-//! The disk light: uniform by area through the concentric map, converted to solid angle.
+//! The disk: uniform by area through the concentric map, converted to solid angle.
 
 use core::f64::consts::PI;
 
 use glam::Vec3;
 
+use super::emitter::Emitter;
+use super::select::{splat_lane, splat_vec};
+use super::shape::{AreaPoint, PreparedShape, Shape, ShapeSample, on_shape};
 use crate::frame::Frame;
-use crate::lane::{V2, V3};
+use crate::lane::{Lane, V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
-use crate::scene::{AreaSample, LightSample, area_sample, le_towards, light_sample, on_light};
 use crate::warp::concentric_disk;
 use crate::warp::dot_wide;
 
-/// A disk light of radius `radius` about `center`, facing along `normal` (normalised on use), and
-/// emitting radiance `le` on that side.
+/// A disk of radius `radius` about `center`, facing along `normal` (normalised on use); as a
+/// light ([`DiskLight`](super::DiskLight)) it emits on that side.
 ///
 /// It samples a point uniformly by area through the concentric map (Shirley and Chiu 1997) and
 /// converts to solid angle: pdf t²/(|cos θ_l|·πr²) = h²/(|wi·n|³·πr²) per steradian, with h the
@@ -28,18 +30,46 @@ use crate::warp::dot_wide;
 /// A shading point within 1e-6 rad of the disk's plane, a zero or non-finite radius or normal,
 /// and NaN give pdf 0.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct DiskLight<V: Point3 = Vec3> {
+pub struct Disk<V: Point3 = Vec3> {
     /// The centre.
     pub center: V,
-    /// The normal: the side the disk emits on.
+    /// The normal: the side the disk faces.
     pub normal: V,
     /// The radius.
     pub radius: V::Lane,
-    /// The emitted radiance (RGB).
-    pub le: V,
 }
 
-/// A [`DiskLight`] prepared at one shading point: [`DiskLight::at`].
+/// A disk light: a [`Disk`] emitting on the side of its normal.
+pub type DiskLight<V = Vec3> = Emitter<Disk<V>, V>;
+
+impl<V: Point3> DiskLight<V> {
+    /// The disk of radius `radius` about `center`, facing along `normal`, emitting `le`.
+    #[inline]
+    pub fn new(center: V, normal: V, radius: V::Lane, le: V) -> Self {
+        Emitter {
+            shape: Disk {
+                center,
+                normal,
+                radius,
+            },
+            le,
+        }
+    }
+}
+
+impl Disk<Vec3> {
+    /// The same disk in every lane of width `W`, exactly.
+    #[inline]
+    pub fn splat<W: Point3>(&self) -> Disk<W> {
+        Disk {
+            center: splat_vec(self.center),
+            normal: splat_vec(self.normal),
+            radius: splat_lane(self.radius),
+        }
+    }
+}
+
+/// A [`Disk`] prepared at one shading point.
 #[derive(Clone, Copy)]
 pub struct PreparedDisk<V: Point3 = Vec3> {
     /// Centre minus shading point.
@@ -50,25 +80,14 @@ pub struct PreparedDisk<V: Point3 = Vec3> {
     h: V::Lane,
     /// 1/(πr²), the area pdf.
     area_pdf: V::Lane,
-    valid: <V::Lane as crate::lane::Lane>::Mask,
-    le: V3<V::Lane>,
+    valid: <V::Lane as Lane>::Mask,
 }
 
-impl<V: Point3<Lane = L>, L: Math> DiskLight<V> {
-    /// The disk of radius `radius` about `center`, facing along `normal`.
-    #[inline]
-    pub fn new(center: V, normal: V, radius: L, le: V) -> Self {
-        Self {
-            center,
-            normal,
-            radius,
-            le,
-        }
-    }
+impl<V: Point3<Lane = L>, L: Math> Shape<V> for Disk<V> {
+    type Prepared = PreparedDisk<V>;
 
-    /// The light prepared at shading point `p`.
     #[inline]
-    pub fn at(&self, p: V) -> PreparedDisk<V> {
+    fn at(&self, p: V, _n: V) -> PreparedDisk<V> {
         let d = self.center.to_lanes() - p.to_lanes();
         let n = self.normal.to_lanes().normalize();
         let r = self.radius;
@@ -85,54 +104,31 @@ impl<V: Point3<Lane = L>, L: Math> DiskLight<V> {
             h,
             area_pdf,
             valid,
-            le: self.le.to_lanes(),
         }
     }
 
-    super::at_one_point!(PreparedDisk);
-
-    /// A point uniform on the disk (the concentric map), its normal, Le towards `p` and the area
-    /// pdf 1/(πr²).
+    /// A point uniform on the disk (the concentric map), its normal and the area pdf 1/(πr²).
     #[inline]
-    pub fn sample_area(&self, p: V, u: V::Vec2) -> AreaSample<V> {
-        let s = self.at(p);
-        let x = self.center.to_lanes() + s.offset(u.to_lanes());
-        area_sample(p.to_lanes(), x, s.frame.n, s.area_pdf, s.le)
+    fn sample_area(&self, u: V::Vec2) -> AreaPoint<V> {
+        let frame = Frame::from_normal(self.normal.to_lanes().normalize());
+        let r = self.radius;
+        let x = self.center.to_lanes() + offset(&frame, r, u.to_lanes());
+        AreaPoint {
+            p: V::from_lanes(x),
+            n: V::from_lanes(frame.n),
+            pdf: L::c(1.0 / PI) / (r * r),
+        }
     }
 
-    /// The power the light emits, π·πr²·luminance(Le).
+    /// πr².
     #[inline]
-    pub fn power(&self) -> L {
+    fn area(&self) -> L {
         let r = self.radius;
-        L::c(PI * PI) * r * r * super::luminance(self.le.to_lanes())
+        L::c(PI) * r * r
     }
 }
 
 impl<V: Point3<Lane = L>, L: Math> PreparedDisk<V> {
-    /// The point of the disk for u, relative to the centre.
-    #[inline(always)]
-    fn offset(&self, u: V2<L>) -> V3<L> {
-        let q: V2<L> = concentric_disk(u);
-        (self.frame.t.scale(q.x) + self.frame.b.scale(q.y)).scale(self.r)
-    }
-
-    /// A direction towards the light, its distance, Le and pdf per steradian (see
-    /// [`DiskLight`]). u is clamped to [0, 1]²; NaN gives the dropped sample (pdf 0).
-    #[inline]
-    pub fn sample(&self, u: V::Vec2) -> LightSample<V> {
-        let wi = (self.d + self.offset(u.to_lanes())).normalize_scaled();
-        let (pdf, t) = self.eval(wi);
-        light_sample(wi, t, self.le().to_lanes(), pdf)
-    }
-
-    super::from_eval!();
-
-    /// The shading point is in front of the disk.
-    #[inline(always)]
-    fn front(&self) -> L::Mask {
-        self.h.lt(L::ZERO)
-    }
-
     /// wi·n (in f64 for the f32 lanes), the distance t along wi to the plane, and whether the
     /// ray meets the disk in front of the shading point.
     #[inline(always)]
@@ -157,14 +153,39 @@ impl<V: Point3<Lane = L>, L: Math> PreparedDisk<V> {
             t.gt(L::ZERO) & (m * m).le(a.mul_add(m, slack * across.dot(wp).abs())) & self.valid;
         (wn, t, on)
     }
+}
 
-    /// The pdf and the hit distance of unit `wi` together, from one test of whether it is on the
-    /// light: pdf > 0 exactly where t < ∞.
+impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedDisk<V> {
+    #[inline]
+    fn sample(&self, u: V::Vec2) -> ShapeSample<V> {
+        let wi = (self.d + offset(&self.frame, self.r, u.to_lanes())).normalize_scaled();
+        let (pdf, dist) = self.eval(V::from_lanes(wi));
+        ShapeSample {
+            wi: V::from_lanes(wi),
+            pdf,
+            dist,
+        }
+    }
+
+    /// h²/(|wi·n|³·πr²) on the disk, with the distance to its plane.
     #[inline(always)]
-    fn eval(&self, wi: V3<L>) -> (L, L) {
-        let (wn, t, on) = self.ray(wi);
+    fn eval(&self, wi: V) -> (L, L) {
+        let (wn, t, on) = self.ray(wi.to_lanes());
         let c = wn.abs();
         let pdf = self.area_pdf * (self.h * self.h) / (c * c * c);
-        on_light(L::select(on, pdf, L::ZERO), t)
+        on_shape(L::select(on, pdf, L::ZERO), t)
     }
+
+    /// The shading point is in front of the disk.
+    #[inline(always)]
+    fn front(&self) -> L::Mask {
+        self.h.lt(L::ZERO)
+    }
+}
+
+/// The point of the disk of radius `r` in `frame`'s tangent plane for u, relative to the centre.
+#[inline(always)]
+fn offset<L: Math>(frame: &Frame<V3<L>>, r: L, u: V2<L>) -> V3<L> {
+    let q: V2<L> = concentric_disk(u);
+    (frame.t.scale(q.x) + frame.b.scale(q.y)).scale(r)
 }

@@ -1,15 +1,18 @@
-//! One light type for slices, and the choice of a light from a slice: uniform, or in proportion
-//! to power through a table in storage the caller provides.
+//! The list of shapes, from which the light of any shape is made ([`Light`]), and the choice of
+//! a light from a slice: uniform, or in proportion to power through a table in storage the
+//! caller provides.
 
 use glam::Vec3;
 
+use super::emitter::{Emitter, PreparedEmitter};
+use super::shape::{AreaPoint, PreparedShape, Shape, ShapeSample};
+use super::{
+    Disk, PreparedDisk, PreparedRectangle, PreparedSphere, PreparedTriangle, Rectangle, Sphere,
+    Triangle,
+};
 use crate::lane::{Lane, V3};
 use crate::math::Math;
 use crate::point::Point3;
-use crate::scene::{
-    AreaSample, DiskLight, LightSample, PreparedDisk, PreparedRectangle, PreparedSphere,
-    PreparedTriangle, RectangleLight, SphereLight, TriangleLight,
-};
 use crate::warp::ONE_MINUS_EPS;
 
 /// The luminance of linear RGB (Rec. 709 weights 0.2126, 0.7152, 0.0722): the power of a light
@@ -21,119 +24,91 @@ pub fn luminance<V: Point3>(rgb: V) -> V::Lane {
     L::<V>::c(0.2126).mul_add(c.x, L::<V>::c(0.7152).mul_add(c.y, L::<V>::c(0.0722) * c.z))
 }
 
-/// Any of the four lights, so that a scene is a slice `&[Light]`. Each method dispatches to the
-/// light's own.
-#[derive(Clone, Copy, Debug)]
-pub enum Light<V: Point3 = Vec3> {
-    /// A [`SphereLight`].
-    Sphere(SphereLight<V>),
-    /// A [`DiskLight`].
-    Disk(DiskLight<V>),
-    /// A [`TriangleLight`].
-    Triangle(TriangleLight<V>),
-    /// A [`RectangleLight`].
-    Rectangle(RectangleLight<V>),
-}
+/// A light of any shape, so that a scene is a slice `&[Light]`: one [`Emitter`] over
+/// [`AnyShape`]. Build one from a light of a given shape with `Light::from`.
+pub type Light<V = Vec3> = Emitter<AnyShape<V>, V>;
 
-/// A [`Light`] prepared at one shading point: [`Light::at`].
-#[derive(Clone, Copy)]
-pub enum PreparedLight<V: Point3 = Vec3> {
-    /// A [`PreparedSphere`].
-    Sphere(PreparedSphere<V>),
-    /// A [`PreparedDisk`].
-    Disk(PreparedDisk<V>),
-    /// A [`PreparedTriangle`].
-    Triangle(PreparedTriangle<V>),
-    /// A [`PreparedRectangle`].
-    Rectangle(PreparedRectangle<V>),
-}
+/// A [`Light`] prepared at one shading point: [`Light::at`](Emitter::at).
+pub type PreparedLight<V = Vec3> = PreparedEmitter<AnyPrepared<V>, V>;
 
-/// One body for every method: the same call on whichever light it is.
-macro_rules! each {
-    ($self:expr, $l:ident => $e:expr) => {
-        match $self {
-            Self::Sphere($l) => $e,
-            Self::Disk($l) => $e,
-            Self::Triangle($l) => $e,
-            Self::Rectangle($l) => $e,
+/// The shapes a [`Light`] can have, each with its prepared form: one line per shape. The enums
+/// [`AnyShape`] and [`AnyPrepared`], their dispatch, the conversion from each shape's light to a
+/// [`Light`] and the splat to other widths all come from this list.
+macro_rules! shapes {
+    ($($name:ident($shape:ident, $prepared:ident)),* $(,)?) => {
+        /// One of the shapes, as the shape of a [`Light`].
+        #[derive(Clone, Copy, Debug)]
+        pub enum AnyShape<V: Point3 = Vec3> {
+            $(
+                #[doc = concat!("A [`", stringify!($shape), "`].")]
+                $name($shape<V>),
+            )*
+        }
+
+        /// One of the prepared shapes: [`AnyShape`] prepared at a shading point.
+        #[derive(Clone, Copy)]
+        pub enum AnyPrepared<V: Point3 = Vec3> {
+            $(
+                #[doc = concat!("A [`", stringify!($prepared), "`].")]
+                $name($prepared<V>),
+            )*
+        }
+
+        impl<V: Point3<Lane = L>, L: Math> Shape<V> for AnyShape<V> {
+            type Prepared = AnyPrepared<V>;
+            #[inline]
+            fn at(&self, p: V, n: V) -> AnyPrepared<V> {
+                match self { $(Self::$name(s) => AnyPrepared::$name(s.at(p, n)),)* }
+            }
+            #[inline]
+            fn sample_area(&self, u: V::Vec2) -> AreaPoint<V> {
+                match self { $(Self::$name(s) => s.sample_area(u),)* }
+            }
+            #[inline]
+            fn area(&self) -> L {
+                match self { $(Self::$name(s) => s.area(),)* }
+            }
+        }
+
+        impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for AnyPrepared<V> {
+            #[inline]
+            fn sample(&self, u: V::Vec2) -> ShapeSample<V> {
+                match self { $(Self::$name(s) => s.sample(u),)* }
+            }
+            #[inline]
+            fn eval(&self, wi: V) -> (L, L) {
+                match self { $(Self::$name(s) => s.eval(wi),)* }
+            }
+            #[inline]
+            fn front(&self) -> L::Mask {
+                match self { $(Self::$name(s) => s.front(),)* }
+            }
+        }
+
+        $(
+            impl<V: Point3> From<Emitter<$shape<V>, V>> for Light<V> {
+                #[inline]
+                fn from(l: Emitter<$shape<V>, V>) -> Self {
+                    Emitter { shape: AnyShape::$name(l.shape), le: l.le }
+                }
+            }
+        )*
+
+        impl AnyShape<Vec3> {
+            /// The same shape in every lane of width `W` (exact: f32 to f64 is exact).
+            #[inline]
+            pub fn splat<W: Point3>(&self) -> AnyShape<W> {
+                match self { $(Self::$name(s) => AnyShape::$name(s.splat()),)* }
+            }
         }
     };
 }
 
-impl<V: Point3<Lane = L>, L: Math> Light<V> {
-    /// The light prepared at shading point `p`.
-    #[inline]
-    pub fn at(&self, p: V) -> PreparedLight<V> {
-        match self {
-            Self::Sphere(l) => PreparedLight::Sphere(l.at(p)),
-            Self::Disk(l) => PreparedLight::Disk(l.at(p)),
-            Self::Triangle(l) => PreparedLight::Triangle(l.at(p)),
-            Self::Rectangle(l) => PreparedLight::Rectangle(l.at(p)),
-        }
-    }
-
-    /// A direction towards the light from `p`, its distance, Le and pdf per steradian.
-    #[inline]
-    pub fn sample(&self, p: V, u: V::Vec2) -> LightSample<V> {
-        each!(self, l => l.sample(p, u))
-    }
-
-    /// The pdf per steradian of `sample` at `p` in unit direction `wi`.
-    #[inline]
-    pub fn pdf(&self, p: V, wi: V) -> L {
-        each!(self, l => l.pdf(p, wi))
-    }
-
-    /// The distance from `p` along unit `wi` to the light, ∞ for a miss.
-    #[inline]
-    pub fn hit(&self, p: V, wi: V) -> L {
-        each!(self, l => l.hit(p, wi))
-    }
-
-    /// A point on the light drawn uniformly by area, its normal, Le towards `p` and the pdf per
-    /// unit area.
-    #[inline]
-    pub fn sample_area(&self, p: V, u: V::Vec2) -> AreaSample<V> {
-        each!(self, l => l.sample_area(p, u))
-    }
-
-    /// The power the light emits: π·area·luminance(Le).
-    #[inline]
-    pub fn power(&self) -> L {
-        each!(self, l => l.power())
-    }
-}
-
-impl<V: Point3<Lane = L>, L: Math> PreparedLight<V> {
-    /// A direction towards the light, its distance, Le and pdf per steradian.
-    #[inline]
-    pub fn sample(&self, u: V::Vec2) -> LightSample<V> {
-        each!(self, l => l.sample(u))
-    }
-
-    /// The pdf per steradian of `sample` in unit direction `wi`.
-    #[inline]
-    pub fn pdf(&self, wi: V) -> L {
-        each!(self, l => l.pdf(wi))
-    }
-
-    /// The distance along unit `wi` to the light, ∞ for a miss.
-    #[inline]
-    pub fn hit(&self, wi: V) -> L {
-        each!(self, l => l.hit(wi))
-    }
-
-    /// `pdf` and `hit` at `wi` from one evaluation.
-    #[inline]
-    pub fn pdf_hit(&self, wi: V) -> (L, L) {
-        each!(self, l => l.pdf_hit(wi))
-    }
-
-    /// The radiance arriving from every direction on the light (0 from behind it).
-    #[inline]
-    pub fn le(&self) -> V {
-        each!(self, l => l.le())
-    }
+shapes! {
+    Sphere(Sphere, PreparedSphere),
+    Disk(Disk, PreparedDisk),
+    Triangle(Triangle, PreparedTriangle),
+    Rectangle(Rectangle, PreparedRectangle),
 }
 
 impl Light<Vec3> {
@@ -142,24 +117,23 @@ impl Light<Vec3> {
     /// f64 is exact), so lane i of the result equals this light bit for bit.
     #[inline]
     pub fn splat<V: Point3>(&self) -> Light<V> {
-        let s = |x: f32| V::Lane::c(f64::from(x));
-        let v = |x: Vec3| V::from_lanes(V3::new(s(x.x), s(x.y), s(x.z)));
-        match *self {
-            Self::Sphere(l) => Light::Sphere(SphereLight::new(v(l.center), s(l.radius), v(l.le))),
-            Self::Disk(l) => Light::Disk(DiskLight::new(
-                v(l.center),
-                v(l.normal),
-                s(l.radius),
-                v(l.le),
-            )),
-            Self::Triangle(l) => {
-                Light::Triangle(TriangleLight::new(v(l.v[0]), v(l.v[1]), v(l.v[2]), v(l.le)))
-            }
-            Self::Rectangle(l) => {
-                Light::Rectangle(RectangleLight::new(v(l.corner), v(l.ex), v(l.ey), v(l.le)))
-            }
+        Emitter {
+            shape: self.shape.splat(),
+            le: splat_vec(self.le),
         }
     }
+}
+
+/// `x` in every lane of width `V`, exactly.
+#[inline(always)]
+pub(crate) fn splat_vec<V: Point3>(x: Vec3) -> V {
+    V::from_lanes(V3::new(splat_lane(x.x), splat_lane(x.y), splat_lane(x.z)))
+}
+
+/// `x` in every lane of `L`, exactly.
+#[inline(always)]
+pub(crate) fn splat_lane<L: Lane>(x: f32) -> L {
+    L::c(f64::from(x))
 }
 
 /// The light chosen by one u: its index, the probability it had, and u rescaled to [0, 1) to
@@ -283,18 +257,6 @@ impl<'a> PowerTable<'a> {
         match index.checked_sub(1).and_then(|i| self.cdf.get(i)) {
             Some(&c) => c,
             None => 0.0,
-        }
-    }
-}
-
-impl<V: Point3<Lane = L>, L: Math> LightSample<V> {
-    /// The same sample with its pdf multiplied by a selection probability: what an estimator
-    /// that chose the light at random must divide by.
-    #[inline]
-    pub fn chosen_with(self, pmf: L) -> Self {
-        Self {
-            pdf: self.pdf * pmf,
-            ..self
         }
     }
 }

@@ -1,17 +1,20 @@
-//! The sphere light: uniform in the cone it subtends from outside, uniform by area from inside.
+//! The sphere: uniform in the cone it subtends from outside, uniform by area from inside.
 
 use core::f64::consts::PI;
 
 use glam::Vec3;
 
+use super::emitter::Emitter;
+use super::select::{splat_lane, splat_vec};
+use super::shape::{AreaPoint, PreparedShape, Shape, ShapeSample, on_shape};
 use crate::frame::Frame;
-use crate::lane::{Mask, V2, V3};
+use crate::lane::{Lane, Mask, V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
-use crate::scene::{AreaSample, LightSample, area_sample, le_towards, light_sample, on_light};
 use crate::warp::{cone_h_from_sin2, uniform_cone, uniform_sphere};
 
-/// A spherical light of radius `radius` about `center`, emitting radiance `le` outwards.
+/// A sphere of radius `radius` about `center`; as a light ([`SphereLight`](super::SphereLight))
+/// it emits outwards.
 ///
 /// - **From outside** (|c − p| > r) it samples the cone of directions the sphere subtends,
 ///   uniformly: pdf 1/(2πh) per steradian with h = 1 − cos θmax built from sin²θmax = r²/d² by
@@ -22,21 +25,44 @@ use crate::warp::{cone_h_from_sin2, uniform_cone, uniform_sphere};
 ///   for a cone narrower than that slack, a BSDF ray finds the light slightly wider than it is.
 /// - **From inside or on the surface** it samples a point uniformly by area and converts to
 ///   solid angle: pdf t²/(|cos θ_l|·4πr²), which along a direction wi is t²/(4πr·√disc), with t
-///   the forward hit and disc the ray's discriminant. From inside, the light shows its back:
-///   Le is 0.
+///   the forward hit and disc the ray's discriminant. From inside, the point is behind the
+///   surface it sees (`front` is false).
 ///
 /// A zero, negative or non-finite radius, and non-finite input, give pdf 0.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SphereLight<V: Point3 = Vec3> {
+pub struct Sphere<V: Point3 = Vec3> {
     /// The centre.
     pub center: V,
     /// The radius.
     pub radius: V::Lane,
-    /// The emitted radiance (RGB).
-    pub le: V,
 }
 
-/// A [`SphereLight`] prepared at one shading point: [`SphereLight::at`].
+/// A sphere light: a [`Sphere`] emitting outwards.
+pub type SphereLight<V = Vec3> = Emitter<Sphere<V>, V>;
+
+impl<V: Point3> SphereLight<V> {
+    /// The light of radius `radius` about `center`, emitting `le`.
+    #[inline]
+    pub fn new(center: V, radius: V::Lane, le: V) -> Self {
+        Emitter {
+            shape: Sphere { center, radius },
+            le,
+        }
+    }
+}
+
+impl Sphere<Vec3> {
+    /// The same sphere in every lane of width `W`, exactly.
+    #[inline]
+    pub fn splat<W: Point3>(&self) -> Sphere<W> {
+        Sphere {
+            center: splat_vec(self.center),
+            radius: splat_lane(self.radius),
+        }
+    }
+}
+
+/// A [`Sphere`] prepared at one shading point.
 #[derive(Clone, Copy)]
 pub struct PreparedSphere<V: Point3 = Vec3> {
     /// Centre minus shading point.
@@ -50,21 +76,15 @@ pub struct PreparedSphere<V: Point3 = Vec3> {
     h: V::Lane,
     cone_pdf: V::Lane,
     area_pdf: V::Lane,
-    outside: <V::Lane as crate::lane::Lane>::Mask,
-    valid: <V::Lane as crate::lane::Lane>::Mask,
-    le: V3<V::Lane>,
+    outside: <V::Lane as Lane>::Mask,
+    valid: <V::Lane as Lane>::Mask,
 }
 
-impl<V: Point3<Lane = L>, L: Math> SphereLight<V> {
-    /// The light of radius `radius` about `center`.
-    #[inline]
-    pub fn new(center: V, radius: L, le: V) -> Self {
-        Self { center, radius, le }
-    }
+impl<V: Point3<Lane = L>, L: Math> Shape<V> for Sphere<V> {
+    type Prepared = PreparedSphere<V>;
 
-    /// The light prepared at shading point `p`.
     #[inline]
-    pub fn at(&self, p: V) -> PreparedSphere<V> {
+    fn at(&self, p: V, _n: V) -> PreparedSphere<V> {
         let (c, p) = (self.center.to_lanes(), p.to_lanes());
         let r = self.radius;
         let d = c - p;
@@ -90,38 +110,37 @@ impl<V: Point3<Lane = L>, L: Math> SphereLight<V> {
             area_pdf: L::c(0.25 / PI) / r2,
             outside,
             valid,
-            le: self.le.to_lanes(),
         }
     }
 
-    super::at_one_point!(PreparedSphere);
-
-    /// A point uniform on the sphere's surface, its outward normal, Le towards `p` (0 where the
-    /// point faces away from `p`) and the area pdf 1/(4πr²).
+    /// A point uniform on the surface (the uniform sphere map), its outward normal and the area
+    /// pdf 1/(4πr²).
     #[inline]
-    pub fn sample_area(&self, p: V, u: V::Vec2) -> AreaSample<V> {
+    fn sample_area(&self, u: V::Vec2) -> AreaPoint<V> {
         let r = self.radius;
         let n: V3<L> = uniform_sphere(u.to_lanes());
         let x = self.center.to_lanes() + n.scale(r);
         let pdf = L::select(r.gt(L::ZERO), L::c(0.25 / PI) / (r * r), L::ZERO);
-        area_sample(p.to_lanes(), x, n, pdf, self.le.to_lanes())
+        AreaPoint {
+            p: V::from_lanes(x),
+            n: V::from_lanes(n),
+            pdf,
+        }
     }
 
-    /// The power the light emits, π·4πr²·luminance(Le).
+    /// 4πr².
     #[inline]
-    pub fn power(&self) -> L {
+    fn area(&self) -> L {
         let r = self.radius;
-        L::c(4.0 * PI * PI) * r * r * super::luminance(self.le.to_lanes())
+        L::c(4.0 * PI) * r * r
     }
 }
 
 type Prepared<V> = PreparedSphere<V>;
 
-impl<V: Point3<Lane = L>, L: Math> PreparedSphere<V> {
-    /// A direction towards the light, its distance, Le and pdf per steradian (see
-    /// [`SphereLight`]). u is clamped to [0, 1]²; NaN gives the dropped sample (pdf 0).
+impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedSphere<V> {
     #[inline]
-    pub fn sample(&self, u: V::Vec2) -> LightSample<V> {
+    fn sample(&self, u: V::Vec2) -> ShapeSample<V> {
         let u: V2<L> = u.to_lanes();
         // Each path only where some lane takes it (a predictable branch: the shading point
         // decides). From outside: the cone about the axis, in the axis's frame.
@@ -138,18 +157,27 @@ impl<V: Point3<Lane = L>, L: Math> PreparedSphere<V> {
             zero
         };
         let wi = V3::select(self.outside, w_cone, w_area);
-        let (pdf, t) = self.eval(wi);
-        light_sample(wi, t, self.le().to_lanes(), pdf)
+        let (pdf, dist) = self.eval_lanes(wi);
+        ShapeSample {
+            wi: V::from_lanes(wi),
+            pdf,
+            dist,
+        }
     }
 
-    super::from_eval!();
+    #[inline]
+    fn eval(&self, wi: V) -> (L, L) {
+        self.eval_lanes(wi.to_lanes())
+    }
 
-    /// The shading point is outside the sphere, which emits outwards.
+    /// The shading point is outside the sphere.
     #[inline(always)]
     fn front(&self) -> L::Mask {
         self.outside
     }
+}
 
+impl<V: Point3<Lane = L>, L: Math> PreparedSphere<V> {
     /// The cosine of the direction with the axis, and the ray's discriminant r² − |q|², where
     /// q = d − (d·wi)wi is the centre's offset from the ray.
     #[inline(always)]
@@ -167,12 +195,10 @@ impl<V: Point3<Lane = L>, L: Math> PreparedSphere<V> {
         wi.dot(axis).gt(L::ZERO) & s.dot(s).le(self.sin2_bound)
     }
 
-    /// The pdf and the hit distance of unit `wi` together, from one test of whether it is on the
-    /// light, so that the two can never disagree: (pdf, t) with pdf > 0 exactly where t < ∞.
-    /// From outside, 1/(2πh) inside the cone and the near hit; from inside, the converted area
-    /// pdf and the far hit.
+    /// [`PreparedShape::eval`]: from outside, 1/(2πh) inside the cone and the near hit; from
+    /// inside, the converted area pdf and the far hit.
     #[inline(always)]
-    fn eval(&self, wi: V3<L>) -> (L, L) {
+    fn eval_lanes(&self, wi: V3<L>) -> (L, L) {
         let (b, disc) = self.ray(wi);
         let root = disc.max(L::ZERO).sqrt();
         // From outside: the cone's pdf, and the near hit as c0/(b + √disc), with no
@@ -197,6 +223,6 @@ impl<V: Point3<Lane = L>, L: Math> PreparedSphere<V> {
             L::select(self.outside, near, far),
             cone | (!self.outside & far.gt(L::ZERO)),
         );
-        on_light(L::select(self.valid & on & !wi.any_nan(), pdf, L::ZERO), t)
+        on_shape(L::select(self.valid & on & !wi.any_nan(), pdf, L::ZERO), t)
     }
 }

@@ -126,8 +126,12 @@ pub fn analytic_scenes() -> Vec<DirectScene> {
     // The light's own f32 geometry is the one the reference sees.
     let above = sphere_at(0.5, 4.0, 1.0);
     let below = sphere_at(1.4, 2.0, 0.8);
-    let sigma = |s: &SphereLight| libm::asin(f64::from(s.radius) / f64::from(s.center.length()));
-    let theta = |s: &SphereLight| libm::acos(f64::from(s.center.z) / f64::from(s.center.length()));
+    let sigma = |s: &SphereLight| {
+        libm::asin(f64::from(s.shape.radius) / f64::from(s.shape.center.length()))
+    };
+    let theta = |s: &SphereLight| {
+        libm::acos(f64::from(s.shape.center.z) / f64::from(s.shape.center.length()))
+    };
     let rect = RectangleLight::new(
         Vec3::new(-0.5, -1.0, 1.5),
         Vec3::new(0.0, 2.0, 0.0),
@@ -135,32 +139,32 @@ pub fn analytic_scenes() -> Vec<DirectScene> {
         Vec3::ONE,
     );
     let corners = [
-        rect.corner,
-        rect.corner + rect.ex,
-        rect.corner + rect.ex + rect.ey,
-        rect.corner + rect.ey,
+        rect.shape.corner,
+        rect.shape.corner + rect.shape.ex,
+        rect.shape.corner + rect.shape.ex + rect.shape.ey,
+        rect.shape.corner + rect.shape.ey,
     ]
     .map(|v| [f64::from(v.x), f64::from(v.y), f64::from(v.z)]);
     let disk = DiskLight::new(Vec3::new(0.0, 0.0, 2.0), Vec3::NEG_Z, 1.5, Vec3::ONE);
     std::vec![
         scene(
             "sphere_above",
-            Light::Sphere(above),
+            Light::from(above),
             crate::reference::sphere_irradiance(sigma(&above), theta(&above)),
         ),
         scene(
             "sphere_horizon",
-            Light::Sphere(below),
+            Light::from(below),
             crate::reference::sphere_irradiance(sigma(&below), theta(&below)),
         ),
         scene(
             "rectangle",
-            Light::Rectangle(rect),
+            Light::from(rect),
             crate::reference::polygon_irradiance([0.0, 0.0, 1.0], &corners),
         ),
         scene(
             "disk_axis",
-            Light::Disk(disk),
+            Light::from(disk),
             crate::reference::disk_irradiance_on_axis(1.5, 2.0),
         ),
     ]
@@ -253,15 +257,15 @@ pub fn quadrature_scenes() -> Vec<DirectScene> {
             material
         };
         let reference = sphere_light_quadrature(
-            light.center.as_dvec3(),
-            f64::from(light.radius),
+            light.shape.center.as_dvec3(),
+            f64::from(light.shape.radius),
             wo.as_dvec3(),
             (f64::from(kd), f64::from(ks), f64::from(n)),
             64,
         );
         scenes.push(DirectScene {
             name: name.into(),
-            lights: std::vec![Light::Sphere(light)],
+            lights: std::vec![Light::from(light)],
             material,
             at: ShadingPoint {
                 p: Vec3::ZERO,
@@ -292,15 +296,15 @@ pub fn grid_scenes() -> Vec<DirectScene> {
             let light =
                 SphereLight::new((mirror * d).as_vec3(), (d * libm::sin(r)) as f32, Vec3::ONE);
             let reference = sphere_light_quadrature(
-                light.center.as_dvec3(),
-                f64::from(light.radius),
+                light.shape.center.as_dvec3(),
+                f64::from(light.shape.radius),
                 wo,
                 (0.0, 1.0, f64::from(n)),
                 64,
             );
             scenes.push(DirectScene {
                 name: format!("grid_n{n}_r{r}"),
-                lights: std::vec![Light::Sphere(light)],
+                lights: std::vec![Light::from(light)],
                 material: Material::Phong(Phong::new(Vec3::ZERO, Vec3::ONE, n)),
                 at: ShadingPoint {
                     p: Vec3::ZERO,

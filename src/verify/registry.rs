@@ -432,23 +432,23 @@ impl Sampler {
         let one = V::from_lanes(V3::all(L::ONE));
         Some(match *self {
             Sampler::LightSphere { center, radius } => {
-                scene::Light::Sphere(SphereLight::new(v(center), Self::param(radius), one))
+                scene::Light::from(SphereLight::new(v(center), Self::param(radius), one))
             }
             Sampler::LightDisk {
                 center,
                 normal,
                 radius,
-            } => scene::Light::Disk(DiskLight::new(
+            } => scene::Light::from(DiskLight::new(
                 v(center),
                 v(normal),
                 Self::param(radius),
                 one,
             )),
             Sampler::LightTriangle { v: [a, b, c] } => {
-                scene::Light::Triangle(TriangleLight::new(v(a), v(b), v(c), one))
+                scene::Light::from(TriangleLight::new(v(a), v(b), v(c), one))
             }
             Sampler::LightRectangle { v: [c, ex, ey] } => {
-                scene::Light::Rectangle(RectangleLight::new(v(c), v(ex), v(ey), one))
+                scene::Light::from(RectangleLight::new(v(c), v(ex), v(ey), one))
             }
             _ => return None,
         })

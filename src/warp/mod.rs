@@ -69,7 +69,7 @@ pub use hemisphere::{
 };
 pub(crate) use phong::phong_lobe_density;
 pub use phong::{PHONG_N_MAX, phong_lobe, phong_lobe_inverse, phong_lobe_pdf};
-pub(crate) use polygon::{cross_wide, dot_wide, plane_dot};
+pub(crate) use polygon::{dot_wide, plane_dot, wide_cross};
 pub use sphere::{uniform_sphere, uniform_sphere_inverse, uniform_sphere_pdf};
 pub use spherical_rectangle::{
     SPHERICAL_RECTANGLE_INVERSE_REACH, SPHERICAL_RECTANGLE_MAX_SR, SPHERICAL_RECTANGLE_MIN_SR,

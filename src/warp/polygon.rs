@@ -35,6 +35,13 @@ pub(crate) fn cross_wide<L: Math>(a: [L; 3], b: [L; 3]) -> [L; 3] {
     cross_in(a.map(L::widen), b.map(L::widen)).map(L::narrow)
 }
 
+/// [`cross_wide`] on vectors.
+#[inline(always)]
+pub(crate) fn wide_cross<L: Math>(p: V3<L>, q: V3<L>) -> V3<L> {
+    let [x, y, z] = cross_wide([p.x, p.y, p.z], [q.x, q.y, q.z]);
+    V3::new(x, y, z)
+}
+
 /// a·b in f64, rounded once: accurate where the f32 dot product cancels (a direction nearly in a
 /// light's plane against the plane's normal).
 #[inline(always)]

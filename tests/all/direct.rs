@@ -344,30 +344,30 @@ fn bad_input_gives_zero_never_nan_in_both_widths() {
         n: Vec3::Z,
         wo: Vec3::new(0.2, 0.1, 1.0).normalize(),
     };
-    let sphere = Light::Sphere(SphereLight::new(Vec3::new(0.0, 0.0, 3.0), 1.0, Vec3::ONE));
+    let sphere = Light::from(SphereLight::new(Vec3::new(0.0, 0.0, 3.0), 1.0, Vec3::ONE));
     let degenerate = [
-        Light::Sphere(SphereLight::new(Vec3::new(0.0, 0.0, 3.0), 0.0, Vec3::ONE)),
-        Light::Disk(DiskLight::new(
+        Light::from(SphereLight::new(Vec3::new(0.0, 0.0, 3.0), 0.0, Vec3::ONE)),
+        Light::from(DiskLight::new(
             Vec3::new(0.0, 0.0, 2.0),
             Vec3::NEG_Z,
             0.0,
             Vec3::ONE,
         )),
-        Light::Triangle(TriangleLight::new(
+        Light::from(TriangleLight::new(
             Vec3::Z,
             Vec3::Z * 2.0,
             Vec3::Z * 3.0,
             Vec3::ONE,
         )),
-        Light::Rectangle(RectangleLight::new(Vec3::Z, Vec3::ZERO, Vec3::X, Vec3::ONE)),
-        Light::Sphere(SphereLight::new(Vec3::splat(f32::NAN), 1.0, Vec3::ONE)),
-        Light::Sphere(SphereLight::new(
+        Light::from(RectangleLight::new(Vec3::Z, Vec3::ZERO, Vec3::X, Vec3::ONE)),
+        Light::from(SphereLight::new(Vec3::splat(f32::NAN), 1.0, Vec3::ONE)),
+        Light::from(SphereLight::new(
             Vec3::new(0.0, 0.0, 3.0),
             f32::INFINITY,
             Vec3::ONE,
         )),
     ];
-    let dark = [Light::Sphere(SphereLight::new(
+    let dark = [Light::from(SphereLight::new(
         Vec3::new(0.0, 0.0, 3.0),
         1.0,
         Vec3::ZERO,
@@ -394,7 +394,7 @@ fn bad_input_gives_zero_never_nan_in_both_widths() {
     };
     // (lights, shading point, must the estimate be exactly 0?)
     let one = [sphere];
-    let disk = [Light::Disk(DiskLight::new(
+    let disk = [Light::from(DiskLight::new(
         Vec3::ZERO,
         Vec3::Z,
         1.0,
@@ -466,18 +466,18 @@ fn bad_input_gives_zero_never_nan_in_both_widths() {
 #[test]
 fn packets_equal_scalars_for_every_strategy() {
     let lights = [
-        Light::Sphere(SphereLight::new(
+        Light::from(SphereLight::new(
             Vec3::new(0.5, 0.2, 3.0),
             0.7,
             Vec3::new(1.0, 0.8, 0.6),
         )),
-        Light::Rectangle(RectangleLight::new(
+        Light::from(RectangleLight::new(
             Vec3::new(-2.0, -1.0, 2.0),
             Vec3::new(0.0, 2.0, 0.0),
             Vec3::new(1.5, 0.0, 0.0),
             Vec3::new(0.5, 0.5, 2.0),
         )),
-        Light::Triangle(TriangleLight::new(
+        Light::from(TriangleLight::new(
             Vec3::new(1.0, -1.0, 1.0),
             Vec3::new(2.0, -1.0, 1.2),
             Vec3::new(1.5, 0.0, 1.5),

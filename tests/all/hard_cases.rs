@@ -1739,7 +1739,7 @@ hard_case!(
                         format!("{what}: pdf {p} vs {}", s.pdf)
                     }));
                     // The point reached lies on the sphere.
-                    let x = s.wi.as_dvec3() * s.dist as f64 - l.center.as_dvec3();
+                    let x = s.wi.as_dvec3() * s.dist as f64 - l.shape.center.as_dvec3();
                     r.push(check((x.length() - 2.0).abs() < 1e-5, || {
                         format!("{what}: |x − c| = {}", x.length())
                     }));
@@ -1775,7 +1775,7 @@ hard_case!(
         let mut r = vec![];
         for (sigma, theta) in [(0.5f64, 1.4f64), (0.3, 1.7), (1.0, 1.2)] {
             let c = Vec3::new(theta.sin() as f32, 0.0, theta.cos() as f32) * 2.0;
-            let light = Light::Sphere(SphereLight::new(c, 2.0 * sigma.sin() as f32, Vec3::ONE));
+            let light = Light::from(SphereLight::new(c, 2.0 * sigma.sin() as f32, Vec3::ONE));
             let (mean, se) = light_sampled_irradiance(&light, 1 << 20);
             let want = mcsample::reference::sphere_irradiance(sigma, theta);
             let naive = std::f64::consts::PI * sigma.sin().powi(2) * theta.cos();

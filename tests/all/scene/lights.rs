@@ -14,8 +14,8 @@ use std::f64::consts::PI;
 use crate::common::TestRng;
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use mcsample::scene::{
-    DiskLight, Lambert, Light, LightChoice, Phong, PowerTable, RectangleLight, SphereLight,
-    TriangleLight, luminance,
+    AnyShape, DiskLight, Lambert, Light, LightChoice, Phong, PowerTable, RectangleLight, Sphere,
+    SphereLight, TriangleLight, luminance,
 };
 use mcsample::verify::{Cap, ChiSquare, PlanarLight, sidak_alpha};
 use mcsample::warp::ONE_MINUS_EPS;
@@ -41,19 +41,19 @@ fn case(name: &str, light: Light, p: Vec3) -> Case {
 }
 
 fn sphere(c: Vec3, r: f32) -> Light {
-    Light::Sphere(SphereLight::new(c, r, Vec3::new(1.0, 0.8, 0.6)))
+    Light::from(SphereLight::new(c, r, Vec3::new(1.0, 0.8, 0.6)))
 }
 
 fn disk(c: Vec3, n: Vec3, r: f32) -> Light {
-    Light::Disk(DiskLight::new(c, n, r, Vec3::new(1.0, 0.8, 0.6)))
+    Light::from(DiskLight::new(c, n, r, Vec3::new(1.0, 0.8, 0.6)))
 }
 
 fn tri(a: Vec3, b: Vec3, c: Vec3) -> Light {
-    Light::Triangle(TriangleLight::new(a, b, c, Vec3::new(1.0, 0.8, 0.6)))
+    Light::from(TriangleLight::new(a, b, c, Vec3::new(1.0, 0.8, 0.6)))
 }
 
 fn rect(c: Vec3, ex: Vec3, ey: Vec3) -> Light {
-    Light::Rectangle(RectangleLight::new(c, ex, ey, Vec3::new(1.0, 0.8, 0.6)))
+    Light::from(RectangleLight::new(c, ex, ey, Vec3::new(1.0, 0.8, 0.6)))
 }
 
 /// An equilateral-ish triangle of circumradius `s` about `c`, in the plane with normal `n`.
@@ -284,8 +284,8 @@ fn ray_f64(light: &Light, p: Vec3, w: DVec3) -> Option<f64> {
     // The f32 direction is unit to 6e-8; the sphere's quadratic assumes exactly 1, and near the
     // silhouette b² − c would amplify the difference a thousandfold.
     let w = w.normalize();
-    match *light {
-        Light::Sphere(s) => {
+    match light.shape {
+        AnyShape::Sphere(s) => {
             let oc = p - s.center.as_dvec3();
             let r = s.radius as f64;
             let b = oc.dot(w);
@@ -299,7 +299,7 @@ fn ray_f64(light: &Light, p: Vec3, w: DVec3) -> Option<f64> {
             let eps = 1e-9 * (oc.length() + r);
             [t0, t1].into_iter().find(|&t| t > eps)
         }
-        Light::Disk(d) => {
+        AnyShape::Disk(d) => {
             let n = d.normal.as_dvec3().normalize();
             let t = (d.center.as_dvec3() - p).dot(n) / w.dot(n);
             let x = p + w * t;
@@ -307,7 +307,7 @@ fn ray_f64(light: &Light, p: Vec3, w: DVec3) -> Option<f64> {
             let tol = 1e-6 * d.radius as f64 + 8.0 * f32::EPSILON as f64 * t / w.dot(n).abs();
             (t > 0.0 && (x - d.center.as_dvec3()).length() <= d.radius as f64 + tol).then_some(t)
         }
-        Light::Triangle(tr) => {
+        AnyShape::Triangle(tr) => {
             let [a, b, c] = tr.v.map(|x| x.as_dvec3());
             let n = (b - a).cross(c - a);
             let t = (a - p).dot(n) / w.dot(n);
@@ -321,7 +321,7 @@ fn ray_f64(light: &Light, p: Vec3, w: DVec3) -> Option<f64> {
                 -(1e-4 + 8.0 * f32::EPSILON as f64 * t * n.length() / (w.dot(n).abs() * edge));
             (t > 0.0 && b1 >= tol && b2 >= tol && 1.0 - b1 - b2 >= tol).then_some(t)
         }
-        Light::Rectangle(r) => {
+        AnyShape::Rectangle(r) => {
             let (c, ex, ey) = (r.corner.as_dvec3(), r.ex.as_dvec3(), r.ey.as_dvec3());
             let n = ex.cross(ey);
             let t = (c - p).dot(n) / w.dot(n);
@@ -341,14 +341,14 @@ fn ray_f64(light: &Light, p: Vec3, w: DVec3) -> Option<f64> {
 }
 
 /// How far (rad) unit `w` from `p` lies outside the sphere's cone: sin θ − sin θmax.
-fn outside_by(s: &SphereLight, p: Vec3, w: Vec3) -> f64 {
+fn outside_by(s: &Sphere, p: Vec3, w: Vec3) -> f64 {
     let d = (s.center - p).as_dvec3();
     let sin_max = s.radius as f64 / d.length();
     w.as_dvec3().normalize().cross(d.normalize()).length() - sin_max
 }
 
 /// True where `w` is within 1e-3 of the sphere's silhouette, as seen from outside.
-fn rim_sphere(s: &SphereLight, p: Vec3, w: Vec3) -> bool {
+fn rim_sphere(s: &Sphere, p: Vec3, w: Vec3) -> bool {
     let d = (s.center - p).as_dvec3();
     let sin_max = s.radius as f64 / d.length();
     sin_max < 1.0 && outside_by(s, p, w) > -1e-3 * sin_max
@@ -389,11 +389,11 @@ fn samples_agree_with_pdf_and_hit() {
             if ((s.wi.length() as f64) - 1.0).abs() > 1e-6 {
                 failures.push(format!("{}: u={u} |wi| = {}", c.name, s.wi.length()));
             }
-            match (ray_f64(&c.light, c.p, s.wi.as_dvec3()), c.light) {
+            match (ray_f64(&c.light, c.p, s.wi.as_dvec3()), c.light.shape) {
                 // At a sphere's silhouette the distance is ill-conditioned in the direction
                 // (dt/dθ → ∞): there, check that the point reached lies on the sphere
                 // (backward error) rather than the distance (forward error).
-                (Some(t), Light::Sphere(sp))
+                (Some(t), AnyShape::Sphere(sp))
                     if rim_sphere(&sp, c.p, s.wi) || c.name.contains("surface") =>
                 {
                     let x = c.p.as_dvec3() + s.wi.as_dvec3() * s.dist as f64;
@@ -403,7 +403,7 @@ fn samples_agree_with_pdf_and_hit() {
                 }
                 (Some(t), _) => worst_dist = worst_dist.max((s.dist as f64 - t).abs() / t),
                 // A rim direction that rounding put outside the sphere, by at most the slack.
-                (None, Light::Sphere(sp))
+                (None, AnyShape::Sphere(sp))
                     if outside_by(&sp, c.p, s.wi) <= 4.0 * f32::EPSILON as f64 => {}
                 (None, _) => failures.push(format!("{}: u={u} wi={} misses in f64", c.name, s.wi)),
             }
@@ -511,8 +511,8 @@ fn silhouette_probes(c: &Case, off: f64) -> Vec<DVec3> {
             }
         }
     };
-    match c.light {
-        Light::Sphere(s) => {
+    match c.light.shape {
+        AnyShape::Sphere(s) => {
             let d = s.center.as_dvec3() - p;
             let (axis, dist) = (d.normalize(), d.length());
             let theta = (s.radius as f64 / dist).asin() + off;
@@ -522,7 +522,7 @@ fn silhouette_probes(c: &Case, off: f64) -> Vec<DVec3> {
                 out.push(axis * theta.cos() + (t * phi.cos() + b * phi.sin()) * theta.sin());
             }
         }
-        Light::Disk(dk) => {
+        AnyShape::Disk(dk) => {
             // Rim points turned across the silhouette: the plane through the shading point and
             // the rim's tangent line at the point is the silhouette's great circle there.
             let n = dk.normal.as_dvec3().normalize();
@@ -537,8 +537,8 @@ fn silhouette_probes(c: &Case, off: f64) -> Vec<DVec3> {
                 out.push(((x - p).normalize() + plane * (sign * off)).normalize());
             }
         }
-        Light::Triangle(tr) => push_edge_points(&mut out, &tr.v.map(|x| x.as_dvec3())),
-        Light::Rectangle(r) => {
+        AnyShape::Triangle(tr) => push_edge_points(&mut out, &tr.v.map(|x| x.as_dvec3())),
+        AnyShape::Rectangle(r) => {
             let (c0, ex, ey) = (r.corner.as_dvec3(), r.ex.as_dvec3(), r.ey.as_dvec3());
             push_edge_points(&mut out, &[c0, c0 + ex, c0 + ex + ey, c0 + ey]);
         }
@@ -558,21 +558,21 @@ fn pdf_is_zero_just_outside_the_silhouette() {
             continue; // No silhouette, or one at the horizon of the point.
         }
         // The light's angular size: its radius or an edge over its distance.
-        let size = match c.light {
-            Light::Sphere(s) => (s.radius / (s.center - c.p).length()) as f64,
-            Light::Disk(d) => (d.radius / (d.center - c.p).length()) as f64,
-            Light::Triangle(t) => ((t.v[1] - t.v[0]).length() / (t.v[0] - c.p).length()) as f64,
-            Light::Rectangle(r) => (r.ex.length() / (r.corner - c.p).length()) as f64,
+        let size = match c.light.shape {
+            AnyShape::Sphere(s) => (s.radius / (s.center - c.p).length()) as f64,
+            AnyShape::Disk(d) => (d.radius / (d.center - c.p).length()) as f64,
+            AnyShape::Triangle(t) => ((t.v[1] - t.v[0]).length() / (t.v[0] - c.p).length()) as f64,
+            AnyShape::Rectangle(r) => (r.ex.length() / (r.corner - c.p).length()) as f64,
         };
         let ulp = f32::EPSILON as f64;
         // The solid angle (f64), and the light's thinnest angular extent, Ω over its longest:
         // a light seen nearly edge-on is a sliver, and "inside" must stay inside it.
         let l64 = light64(&c.light).at(c.p.as_dvec3());
-        let centre = match c.light {
-            Light::Sphere(s) => s.center,
-            Light::Disk(d) => d.center,
-            Light::Triangle(t) => (t.v[0] + t.v[1] + t.v[2]) / 3.0,
-            Light::Rectangle(r) => r.corner + (r.ex + r.ey) * 0.5,
+        let centre = match c.light.shape {
+            AnyShape::Sphere(s) => s.center,
+            AnyShape::Disk(d) => d.center,
+            AnyShape::Triangle(t) => (t.v[0] + t.v[1] + t.v[2]) / 3.0,
+            AnyShape::Rectangle(r) => r.corner + (r.ex + r.ey) * 0.5,
         } - c.p;
         let omega = 1.0 / l64.pdf(centre.as_dvec3().normalize());
         let thin = omega / size;
@@ -685,9 +685,9 @@ fn pdf_integrates_to_one() {
 /// square's image) and unit normal, relative to the shading point; `None` for the sphere.
 fn planar_of(c: &Case) -> Option<(PlanarLight, f64, DVec3)> {
     let p = c.p;
-    Some(match c.light {
-        Light::Sphere(_) => return None,
-        Light::Disk(dk) => {
+    Some(match c.light.shape {
+        AnyShape::Sphere(_) => return None,
+        AnyShape::Disk(dk) => {
             let (t, b) = dk.normal.normalize().any_orthonormal_pair();
             let r = dk.radius;
             let corner = dk.center - p - (t + b) * r;
@@ -698,7 +698,7 @@ fn planar_of(c: &Case) -> Option<(PlanarLight, f64, DVec3)> {
                 n,
             )
         }
-        Light::Triangle(tr) => {
+        AnyShape::Triangle(tr) => {
             let [a, b, cc] = tr.v.map(|x| x - p);
             let n = (b - a).as_dvec3().cross((cc - a).as_dvec3());
             (
@@ -707,7 +707,7 @@ fn planar_of(c: &Case) -> Option<(PlanarLight, f64, DVec3)> {
                 n.normalize(),
             )
         }
-        Light::Rectangle(r) => {
+        AnyShape::Rectangle(r) => {
             let n = r.ex.as_dvec3().cross(r.ey.as_dvec3());
             (
                 PlanarLight::parallelogram(r.corner - p, r.ex, r.ey),
@@ -721,8 +721,8 @@ fn planar_of(c: &Case) -> Option<(PlanarLight, f64, DVec3)> {
 /// A cap of directions from the shading point that holds the light.
 fn cap_of(c: &Case) -> Cap {
     let p = c.p;
-    match c.light {
-        Light::Sphere(s) => {
+    match c.light.shape {
+        AnyShape::Sphere(s) => {
             let d = (s.center - p).as_dvec3();
             let s2 = (s.radius as f64 / d.length()).powi(2);
             if s2 < 1.0 {
@@ -731,7 +731,7 @@ fn cap_of(c: &Case) -> Cap {
                 Cap::z(2.0)
             }
         }
-        Light::Disk(dk) => {
+        AnyShape::Disk(dk) => {
             let (t, b) = dk.normal.normalize().any_orthonormal_pair();
             let rim: Vec<Vec3> = (0..64)
                 .map(|k| {
@@ -741,8 +741,8 @@ fn cap_of(c: &Case) -> Cap {
                 .collect();
             Cap::around(&rim)
         }
-        Light::Triangle(t) => Cap::around(&t.v.map(|x| x - p)),
-        Light::Rectangle(r) => {
+        AnyShape::Triangle(t) => Cap::around(&t.v.map(|x| x - p)),
+        AnyShape::Rectangle(r) => {
             let c0 = r.corner - p;
             Cap::around(&[c0, c0 + r.ex, c0 + r.ey, c0 + r.ex + r.ey])
         }
@@ -752,20 +752,20 @@ fn cap_of(c: &Case) -> Cap {
 /// The same light in f64.
 fn light64(l: &Light) -> Light<DVec3> {
     let d = |v: Vec3| v.as_dvec3();
-    match *l {
-        Light::Sphere(s) => Light::Sphere(SphereLight::new(d(s.center), s.radius as f64, d(s.le))),
-        Light::Disk(k) => Light::Disk(DiskLight::new(
+    match l.shape {
+        AnyShape::Sphere(s) => Light::from(SphereLight::new(d(s.center), s.radius as f64, d(l.le))),
+        AnyShape::Disk(k) => Light::from(DiskLight::new(
             d(k.center),
             d(k.normal),
             k.radius as f64,
-            d(k.le),
+            d(l.le),
         )),
-        Light::Triangle(t) => {
+        AnyShape::Triangle(t) => {
             let [a, b, c] = t.v.map(d);
-            Light::Triangle(TriangleLight::new(a, b, c, d(t.le)))
+            Light::from(TriangleLight::new(a, b, c, d(l.le)))
         }
-        Light::Rectangle(r) => {
-            Light::Rectangle(RectangleLight::new(d(r.corner), d(r.ex), d(r.ey), d(r.le)))
+        AnyShape::Rectangle(r) => {
+            Light::from(RectangleLight::new(d(r.corner), d(r.ex), d(r.ey), d(l.le)))
         }
     }
 }
@@ -939,35 +939,35 @@ fn pack(ls: &[Light]) -> Light<Vec3x8> {
         |f: &dyn Fn(&Light) -> f32| F32x8::from(std::array::from_fn::<f32, 8, _>(|i| f(&ls[i])));
     macro_rules! get {
         ($kind:ident, $x:ident => $e:expr) => {
-            |l: &Light| match l {
-                Light::$kind($x) => $e,
+            |l: &Light| match l.shape {
+                AnyShape::$kind($x) => $e,
                 _ => unreachable!(),
             }
         };
     }
-    match ls[0] {
-        Light::Sphere(_) => Light::Sphere(SphereLight::new(
+    match ls[0].shape {
+        AnyShape::Sphere(_) => Light::from(SphereLight::new(
             v3(&get!(Sphere, s => s.center)),
             f1(&get!(Sphere, s => s.radius)),
-            v3(&get!(Sphere, s => s.le)),
+            v3(&|l: &Light| l.le),
         )),
-        Light::Disk(_) => Light::Disk(DiskLight::new(
+        AnyShape::Disk(_) => Light::from(DiskLight::new(
             v3(&get!(Disk, s => s.center)),
             v3(&get!(Disk, s => s.normal)),
             f1(&get!(Disk, s => s.radius)),
-            v3(&get!(Disk, s => s.le)),
+            v3(&|l: &Light| l.le),
         )),
-        Light::Triangle(_) => Light::Triangle(TriangleLight::new(
+        AnyShape::Triangle(_) => Light::from(TriangleLight::new(
             v3(&get!(Triangle, s => s.v[0])),
             v3(&get!(Triangle, s => s.v[1])),
             v3(&get!(Triangle, s => s.v[2])),
-            v3(&get!(Triangle, s => s.le)),
+            v3(&|l: &Light| l.le),
         )),
-        Light::Rectangle(_) => Light::Rectangle(RectangleLight::new(
+        AnyShape::Rectangle(_) => Light::from(RectangleLight::new(
             v3(&get!(Rectangle, s => s.corner)),
             v3(&get!(Rectangle, s => s.ex)),
             v3(&get!(Rectangle, s => s.ey)),
-            v3(&get!(Rectangle, s => s.le)),
+            v3(&|l: &Light| l.le),
         )),
     }
 }
@@ -980,8 +980,8 @@ fn area_samples_lie_on_the_light() {
         for _ in 0..2000 {
             let a = c.light.sample_area(c.p, rng.u2());
             let x = a.p.as_dvec3();
-            let (on, area, n) = match c.light {
-                Light::Sphere(s) => {
+            let (on, area, n) = match c.light.shape {
+                AnyShape::Sphere(s) => {
                     let r = s.radius as f64;
                     let d = x - s.center.as_dvec3();
                     (
@@ -990,7 +990,7 @@ fn area_samples_lie_on_the_light() {
                         d.normalize(),
                     )
                 }
-                Light::Disk(k) => {
+                AnyShape::Disk(k) => {
                     let n = k.normal.as_dvec3().normalize();
                     let d = x - k.center.as_dvec3();
                     let scale = 1e-6 * (k.radius as f64 + k.center.length() as f64);
@@ -1000,7 +1000,7 @@ fn area_samples_lie_on_the_light() {
                         n,
                     )
                 }
-                Light::Triangle(t) => {
+                AnyShape::Triangle(t) => {
                     let [p0, p1, p2] = t.v.map(|v| v.as_dvec3());
                     let n = (p1 - p0).cross(p2 - p0);
                     let scale = 1e-6 * (p0.length() + (p1 - p0).length());
@@ -1010,7 +1010,7 @@ fn area_samples_lie_on_the_light() {
                         n.normalize(),
                     )
                 }
-                Light::Rectangle(r) => {
+                AnyShape::Rectangle(r) => {
                     let n = r.ex.as_dvec3().cross(r.ey.as_dvec3());
                     let scale = 1e-6 * (r.corner.length() as f64 + r.ex.length() as f64);
                     (
@@ -1030,8 +1030,8 @@ fn area_samples_lie_on_the_light() {
             // The f64 normal comes from the rounded point: allow for its rounding at the light's
             // distance from the world origin.
             let scale = (c.p.length() + 1.0) as f64
-                / match c.light {
-                    Light::Sphere(s) => s.radius as f64,
+                / match c.light.shape {
+                    AnyShape::Sphere(s) => s.radius as f64,
                     _ => 1.0,
                 };
             assert!(
@@ -1059,7 +1059,7 @@ fn power_selection_follows_power() {
     let lights = [
         sphere(Vec3::new(0.0, 0.0, 3.0), 0.5),
         disk(Vec3::new(1.0, 0.0, 2.0), -Vec3::Z, 1.0),
-        Light::Sphere(SphereLight::new(Vec3::new(0.0, 1.0, 2.0), 0.3, Vec3::ZERO)),
+        Light::from(SphereLight::new(Vec3::new(0.0, 1.0, 2.0), 0.3, Vec3::ZERO)),
         tri_at(Vec3::new(0.0, -1.0, 2.0), -Vec3::Z, 0.8),
         rect_at(Vec3::new(-1.0, 0.0, 2.0), -Vec3::Z, 0.6),
     ];
@@ -1133,7 +1133,7 @@ fn power_selection_follows_power() {
     assert_eq!(LightChoice::uniform(0, 0.3).pmf, 0.0);
     assert_eq!(LightChoice::uniform(3, f32::NAN).index, 0);
     // Zero total power: uniform.
-    let dark = [Light::Sphere(SphereLight::new(Vec3::Z, 1.0, Vec3::ZERO)); 4];
+    let dark = [Light::from(SphereLight::new(Vec3::Z, 1.0, Vec3::ZERO)); 4];
     let mut st = [0.0f32; 4];
     let t = PowerTable::new(&dark, &mut st);
     assert!((0..4).all(|i| t.pmf(i) == 0.25));

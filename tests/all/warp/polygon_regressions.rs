@@ -237,7 +237,7 @@ fn cosine_pdf_above_one_and_nan_radiance() {
 
     let signalling = f32::from_bits(0x7fb1_ffff);
     let le = Vec3::new(signalling, 1.0, 2.0);
-    let light = Light::Sphere(SphereLight::new(Vec3::new(0.0, 0.0, 3.0), 1.0, le));
+    let light = Light::from(SphereLight::new(Vec3::new(0.0, 0.0, 3.0), 1.0, le));
     let s = light.sample(Vec3::ZERO, Vec2::splat(0.4));
     let s8 = light
         .splat::<Vec3x8>()

@@ -22,7 +22,7 @@ use cortex_m_semihosting::hprintln;
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use mcsample::direct::{self, Config, Lights, ShadingPoint, Strategy};
 use mcsample::rng::Pcg32x8;
-use mcsample::scene::{DiskLight, Lambert, Light, RectangleLight, SphereLight, TriangleLight};
+use mcsample::scene::{AnyShape, DiskLight, Lambert, Light, RectangleLight, SphereLight, TriangleLight};
 use mcsample::{mis, seq, warp};
 use mcsample_firmware::exit;
 
@@ -245,20 +245,20 @@ fn lights() -> bool {
     let le = Vec3::ONE;
     let p = Vec3::new(0.1, -0.2, 0.0);
     let all = [
-        Light::Sphere(SphereLight::new(Vec3::new(1.0, 0.5, 3.0), 0.7, le)),
-        Light::Disk(DiskLight::new(
+        Light::from(SphereLight::new(Vec3::new(1.0, 0.5, 3.0), 0.7, le)),
+        Light::from(DiskLight::new(
             Vec3::new(0.0, 0.0, 2.0),
             Vec3::NEG_Z,
             1.5,
             le,
         )),
-        Light::Triangle(TriangleLight::new(
+        Light::from(TriangleLight::new(
             Vec3::new(-1.0, -1.0, 2.0),
             Vec3::new(1.5, -0.5, 2.5),
             Vec3::new(0.0, 1.0, 1.5),
             le,
         )),
-        Light::Rectangle(RectangleLight::new(
+        Light::from(RectangleLight::new(
             Vec3::new(-0.5, -1.0, 1.5),
             Vec3::new(0.0, 2.0, 0.0),
             Vec3::new(1.5, 0.0, 0.0),
@@ -287,13 +287,13 @@ fn direct_estimate() -> bool {
     // A sphere of radius 1 at distance 4, 0.5 rad from the normal, over a white Lambert point.
     let (theta, dist) = (0.5f64, 4.0f64);
     let center = DVec3::new(libm::sin(theta), 0.0, libm::cos(theta)) * dist;
-    let lights = [Light::Sphere(SphereLight::new(
+    let lights = [Light::from(SphereLight::new(
         center.as_vec3(),
         1.0,
         Vec3::ONE,
     ))];
     let c = lights[0].splat::<DVec3>();
-    let Light::Sphere(s) = c else { unreachable!() };
+    let AnyShape::Sphere(s) = c.shape else { unreachable!() };
     let sigma = libm::asin(s.radius / s.center.length());
     let cos_theta = s.center.z / s.center.length();
     let want = mcsample::reference::sphere_irradiance(sigma, libm::acos(cos_theta))

@@ -48,24 +48,24 @@ fn main() -> ! {
     acc += mis::power(1.0, acc, 1.0, 0.5) + mis::balance(1.0, acc, 1.0, 0.5);
 
     let lights = [
-        Light::Sphere(SphereLight::new(
+        Light::from(SphereLight::new(
             bb(Vec3::new(1.0, 0.5, 3.0)),
             bb(0.7),
             Vec3::ONE,
         )),
-        Light::Disk(DiskLight::new(
+        Light::from(DiskLight::new(
             bb(Vec3::Z * 2.0),
             Vec3::NEG_Z,
             bb(1.5),
             Vec3::ONE,
         )),
-        Light::Triangle(TriangleLight::new(
+        Light::from(TriangleLight::new(
             a + Vec3::Z,
             b + Vec3::Z,
             c + Vec3::Z,
             Vec3::ONE,
         )),
-        Light::Rectangle(RectangleLight::new(a + Vec3::Z, b, c, Vec3::ONE)),
+        Light::from(RectangleLight::new(a + Vec3::Z, b, c, Vec3::ONE)),
     ];
     let at = ShadingPoint {
         p: bb(Vec3::ZERO),

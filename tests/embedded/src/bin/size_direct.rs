@@ -12,7 +12,7 @@ use mcsample::scene::{Lambert, Light, SphereLight};
 
 #[entry]
 fn main() -> ! {
-    let lights = [Light::Sphere(SphereLight::new(
+    let lights = [Light::from(SphereLight::new(
         bb(Vec3::new(1.0, 0.5, 3.0)),
         bb(0.7),
         Vec3::ONE,

@@ -1,0 +1,148 @@
+//! The parallelogram: uniform in solid angle through the spherical rectangle sampler of
+//! [`warp`](crate::warp) where it is a rectangle, by area otherwise.
+
+use glam::Vec3;
+
+use super::emitter::Emitter;
+use super::select::splat_vec;
+use super::shape::{AreaPoint, PreparedShape, Shape, ShapeSample, on_shape};
+use crate::lane::V3;
+use crate::math::Math;
+use crate::point::{Point2, Point3};
+use crate::warp::{SphericalRectangle, plane_dot, wide_cross};
+
+/// A parallelogram `corner + s·ex + t·ey`, s, t ∈ [0, 1], facing the side of its normal ex × ey.
+/// As a light ([`RectangleLight`](super::RectangleLight)) it emits on that side.
+///
+/// A rectangle (ex ⟂ ey) is sampled uniformly in solid angle ([`SphericalRectangle`], Ureña,
+/// Fajardo and King 2013), with the area fallback below
+/// [`SPHERICAL_RECTANGLE_MIN_SR`](crate::warp::SPHERICAL_RECTANGLE_MIN_SR). Ureña's map needs a
+/// rectangle: a parallelogram whose edges are further than 2e-6 from orthogonal is sampled by
+/// area, with its exact converted pdf (or split it into two [`Triangle`](super::Triangle)s,
+/// which are sampled in solid angle).
+///
+/// A shading point closer to the plane than 1e-6 of its distance to the nearest corner, zero
+/// edges and non-finite input give pdf 0.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Rectangle<V: Point3 = Vec3> {
+    /// The corner.
+    pub corner: V,
+    /// The first edge.
+    pub ex: V,
+    /// The second edge (orthogonal to the first for a rectangle).
+    pub ey: V,
+}
+
+/// A parallelogram light: a [`Rectangle`] emitting on the side of its normal.
+pub type RectangleLight<V = Vec3> = Emitter<Rectangle<V>, V>;
+
+impl<V: Point3> RectangleLight<V> {
+    /// The parallelogram `corner + s·ex + t·ey`, emitting `le`.
+    #[inline]
+    pub fn new(corner: V, ex: V, ey: V, le: V) -> Self {
+        Emitter {
+            shape: Rectangle { corner, ex, ey },
+            le,
+        }
+    }
+}
+
+impl Rectangle<Vec3> {
+    /// The same parallelogram in every lane of width `W`, exactly.
+    #[inline]
+    pub fn splat<W: Point3>(&self) -> Rectangle<W> {
+        Rectangle {
+            corner: splat_vec(self.corner),
+            ex: splat_vec(self.ex),
+            ey: splat_vec(self.ey),
+        }
+    }
+}
+
+/// A [`Rectangle`] prepared at one shading point.
+#[derive(Clone, Copy)]
+pub struct PreparedRectangle<V: Point3 = Vec3> {
+    rect: SphericalRectangle<V3<V::Lane>>,
+    /// The edges.
+    ex: V3<V::Lane>,
+    ey: V3<V::Lane>,
+    /// corner·(ex × ey), in f64 for the f32 lanes: negative on the side the normal faces.
+    h: V::Lane,
+}
+
+impl<V: Point3<Lane = L>, L: Math> Shape<V> for Rectangle<V> {
+    type Prepared = PreparedRectangle<V>;
+
+    #[inline]
+    fn at(&self, p: V, _n: V) -> PreparedRectangle<V> {
+        let corner = self.corner.to_lanes() - p.to_lanes();
+        let (ex, ey) = (self.ex.to_lanes(), self.ey.to_lanes());
+        PreparedRectangle {
+            rect: SphericalRectangle::new(corner, ex, ey),
+            ex,
+            ey,
+            h: normal_dot(corner, ex, ey),
+        }
+    }
+
+    /// A point uniform on the parallelogram, its unit normal and the area pdf 1/area.
+    #[inline]
+    fn sample_area(&self, u: V::Vec2) -> AreaPoint<V> {
+        let u = u.to_lanes();
+        let (c, ex, ey) = (
+            self.corner.to_lanes(),
+            self.ex.to_lanes(),
+            self.ey.to_lanes(),
+        );
+        let (s, t) = (u.x.clamp(L::ZERO, L::ONE), u.y.clamp(L::ZERO, L::ONE));
+        let x = c + ex.scale(s) + ey.scale(t);
+        let n = wide_cross(ex, ey);
+        AreaPoint {
+            p: V::from_lanes(x),
+            n: V::from_lanes(n.normalize()),
+            pdf: L::ONE / n.length(),
+        }
+    }
+
+    /// |ex × ey|, the cross product in f64.
+    #[inline]
+    fn area(&self) -> L {
+        wide_cross(self.ex.to_lanes(), self.ey.to_lanes()).length()
+    }
+}
+
+impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedRectangle<V> {
+    #[inline]
+    fn sample(&self, u: V::Vec2) -> ShapeSample<V> {
+        let (x, kept) = self.rect.sample(u.to_lanes());
+        // The point may be far from unit length (a light 1e-22 away): normalise from a scale
+        // where its square cannot underflow.
+        let wi = x.normalize_scaled();
+        let (pdf, dist) = self.eval(V::from_lanes(wi));
+        ShapeSample {
+            wi: V::from_lanes(wi),
+            pdf: L::select(kept.gt(L::ZERO), pdf, L::ZERO),
+            dist,
+        }
+    }
+
+    /// The spherical rectangle's pdf of unit `wi` and the distance h/(wi·n) to the plane.
+    #[inline(always)]
+    fn eval(&self, wi: V) -> (L, L) {
+        let wi = wi.to_lanes();
+        on_shape(self.rect.pdf(wi), self.h / normal_dot(wi, self.ex, self.ey))
+    }
+
+    /// The shading point is on the side of the normal.
+    #[inline(always)]
+    fn front(&self) -> L::Mask {
+        self.h.lt(L::ZERO)
+    }
+}
+
+/// w·(ex × ey), in f64 for the f32 lanes.
+#[inline(always)]
+fn normal_dot<L: Math>(w: V3<L>, ex: V3<L>, ey: V3<L>) -> L {
+    let z = [L::ZERO; 3];
+    plane_dot([w.x, w.y, w.z], z, [ex.x, ex.y, ex.z], [ey.x, ey.y, ey.z])
+}

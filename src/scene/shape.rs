@@ -1,0 +1,73 @@
+//! The shape contract: the geometry of a light, without its emission. A shape is prepared at a
+//! shading point; prepared, it samples directions towards itself, evaluates the pdf and the
+//! distance of any direction, and says which side of it the point is on. Emission is one layer
+//! on top of every shape ([`Emitter`](super::Emitter)).
+
+use crate::lane::Lane;
+use crate::math::Math;
+use crate::point::Point3;
+
+/// A direction towards a shape from a prepared point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ShapeSample<V: Point3> {
+    /// The unit direction (world space).
+    pub wi: V,
+    /// The pdf per steradian: [`PreparedShape::eval`] at `wi`, bit for bit, or 0 for a dropped
+    /// sample.
+    pub pdf: V::Lane,
+    /// The distance along `wi` to the shape: [`PreparedShape::eval`]'s at `wi`.
+    pub dist: V::Lane,
+}
+
+/// A point drawn uniformly by area on a shape.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AreaPoint<V: Point3> {
+    /// The point (world space).
+    pub p: V,
+    /// The unit normal there: outwards for a sphere, the side a planar shape faces.
+    pub n: V,
+    /// The pdf per unit area, 1/area; 0 for a degenerate shape or NaN in u.
+    pub pdf: V::Lane,
+}
+
+/// A light's geometry (sphere, disk, triangle, parallelogram), generic over the width like the
+/// warps. What it must give is named here; [`Emitter`](super::Emitter) builds the light's
+/// methods from it once.
+pub trait Shape<V: Point3>: Copy {
+    /// The shape prepared at one shading point.
+    type Prepared: PreparedShape<V>;
+    /// The shape prepared at shading point `p`, with the shading normal `n` (the zero vector for
+    /// none). Splitting takes several samples at one point and pays the set-up once.
+    fn at(&self, p: V, n: V) -> Self::Prepared;
+    /// A point uniform by area, its normal and the area pdf. u is clamped to [0, 1]²; NaN gives
+    /// pdf 0.
+    fn sample_area(&self, u: V::Vec2) -> AreaPoint<V>;
+    /// The surface area (the sphere's whole surface).
+    fn area(&self) -> V::Lane;
+}
+
+/// A shape prepared at a shading point.
+pub trait PreparedShape<V: Point3>: Copy {
+    /// A direction by the shape's own sampler, with its pdf and distance: the pdf is
+    /// [`eval`](Self::eval)'s at the returned direction, bit for bit, or 0 where the sample is
+    /// dropped (NaN u, a degenerate shape). u is clamped to [0, 1]².
+    fn sample(&self, u: V::Vec2) -> ShapeSample<V>;
+    /// The pdf per steradian with which [`sample`](Self::sample) returns unit direction `wi`,
+    /// and the distance to the shape along it: (pdf, t) with pdf > 0 exactly where t < ∞, from
+    /// one test of whether `wi` is on the shape, so the two never disagree.
+    fn eval(&self, wi: V) -> (V::Lane, V::Lane);
+    /// Where the shading point is on the side the shape faces (outside a sphere, on the side of
+    /// a planar shape's normal): the side a one-sided emitter lights.
+    fn front(&self) -> <V::Lane as Lane>::Mask;
+}
+
+/// The one rule of every shape's `eval`: (pdf, t) where the direction is on the shape (pdf > 0
+/// and finite, t > 0 and finite), else (0, ∞), so that pdf > 0 exactly where t < ∞.
+#[inline(always)]
+pub(crate) fn on_shape<L: Math>(pdf: L, t: L) -> (L, L) {
+    let ok = pdf.gt(L::ZERO) & pdf.is_finite() & t.gt(L::ZERO) & t.is_finite();
+    (
+        L::select(ok, pdf, L::ZERO),
+        L::select(ok, t, L::c(f64::INFINITY)),
+    )
+}

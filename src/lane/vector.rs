@@ -59,11 +59,7 @@ impl<L: Lane> V2<L> {
     /// makes NaN input give NaN in every coordinate, not just in those the NaN reached.
     #[inline(always)]
     pub fn nan_where(self, m: L::Mask) -> Self {
-        let nan = L::c(f64::NAN);
-        Self::new(
-            L::select(m | self.x.is_nan(), nan, self.x),
-            L::select(m | self.y.is_nan(), nan, self.y),
-        )
+        Self::new(nan_where(m, self.x), nan_where(m, self.y))
     }
     /// Every component the canonical NaN where `m` is set; for warps whose outputs are NaN only
     /// where an input is, so that `m` (the inputs' NaN) is the whole story. One mask for every
@@ -156,11 +152,10 @@ impl<L: Lane> V3<L> {
     /// [`V2::nan_where`]).
     #[inline(always)]
     pub fn nan_where(self, m: L::Mask) -> Self {
-        let nan = L::c(f64::NAN);
         Self::new(
-            L::select(m | self.x.is_nan(), nan, self.x),
-            L::select(m | self.y.is_nan(), nan, self.y),
-            L::select(m | self.z.is_nan(), nan, self.z),
+            nan_where(m, self.x),
+            nan_where(m, self.y),
+            nan_where(m, self.z),
         )
     }
     /// Every component the canonical NaN where `m` is set (see [`V2::nan_if`]).
@@ -243,3 +238,9 @@ macro_rules! glam_conversions {
 
 glam_conversions!(glam::Vec2, glam::Vec3, f32);
 glam_conversions!(glam::DVec2, glam::DVec3, f64);
+
+/// The canonical NaN where `m` is set or `x` is NaN, else `x`.
+#[inline(always)]
+fn nan_where<L: Lane>(m: L::Mask, x: L) -> L {
+    L::select(m | x.is_nan(), L::c(f64::NAN), x)
+}

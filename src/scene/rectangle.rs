@@ -5,7 +5,7 @@ use glam::Vec3;
 
 use super::emitter::Emitter;
 use super::select::splat_vec;
-use super::shape::{AreaPoint, PreparedShape, Shape, ShapeSample, on_shape};
+use super::shape::{AreaPoint, PreparedShape, Shape, ShapeSample, on_shape, planar_point, warped};
 use crate::lane::V3;
 use crate::math::Math;
 use crate::point::{Point2, Point3};
@@ -97,11 +97,7 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Rectangle<V> {
         let (s, t) = (u.x.clamp(L::ZERO, L::ONE), u.y.clamp(L::ZERO, L::ONE));
         let x = c + ex.scale(s) + ey.scale(t);
         let n = wide_cross(ex, ey);
-        AreaPoint {
-            p: V::from_lanes(x),
-            n: V::from_lanes(n.normalize()),
-            pdf: L::ONE / n.length(),
-        }
+        planar_point(x, n, L::ONE)
     }
 
     /// |ex × ey|, the cross product in f64.
@@ -118,12 +114,7 @@ impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedRectangle<V> {
         // The point may be far from unit length (a light 1e-22 away): normalise from a scale
         // where its square cannot underflow.
         let wi = x.normalize_scaled();
-        let (pdf, dist) = self.eval(V::from_lanes(wi));
-        ShapeSample {
-            wi: V::from_lanes(wi),
-            pdf: L::select(kept.gt(L::ZERO), pdf, L::ZERO),
-            dist,
-        }
+        warped(wi, kept, self.eval(V::from_lanes(wi)))
     }
 
     /// The spherical rectangle's pdf of unit `wi` and the distance h/(wi·n) to the plane.

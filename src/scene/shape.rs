@@ -71,3 +71,34 @@ pub(crate) fn on_shape<L: Math>(pdf: L, t: L) -> (L, L) {
         L::select(ok, t, L::c(f64::INFINITY)),
     )
 }
+
+/// The sample of direction `wi` from a spherical polygon's warp, with the shape's (pdf, t) at
+/// it: the pdf kept only where the warp kept the sample (its own pdf `kept` > 0), since a
+/// dropped sample's stand-in direction may well be on the shape.
+#[inline(always)]
+pub(crate) fn warped<V: Point3<Lane = L>, L: Math>(
+    wi: crate::lane::V3<L>,
+    kept: L,
+    (pdf, dist): (L, L),
+) -> ShapeSample<V> {
+    ShapeSample {
+        wi: V::from_lanes(wi),
+        pdf: L::select(kept.gt(L::ZERO), pdf, L::ZERO),
+        dist,
+    }
+}
+
+/// The area sample of point `x` of a planar shape whose unnormalised normal `n` has length
+/// `k`·area (k = 2 for a triangle's edge cross product, 1 for a parallelogram's): pdf 1/area.
+#[inline(always)]
+pub(crate) fn planar_point<V: Point3<Lane = L>, L: Math>(
+    x: crate::lane::V3<L>,
+    n: crate::lane::V3<L>,
+    k: L,
+) -> AreaPoint<V> {
+    AreaPoint {
+        p: V::from_lanes(x),
+        n: V::from_lanes(n.normalize()),
+        pdf: k / n.length(),
+    }
+}

@@ -6,7 +6,7 @@ use glam::Vec3;
 
 use super::emitter::Emitter;
 use super::select::splat_vec;
-use super::shape::{AreaPoint, PreparedShape, Shape, ShapeSample, on_shape};
+use super::shape::{AreaPoint, PreparedShape, Shape, ShapeSample, on_shape, planar_point, warped};
 use crate::lane::V3;
 use crate::math::Math;
 use crate::point::{Point2, Point3};
@@ -86,11 +86,7 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Triangle<V> {
         let bary: V3<L> = uniform_triangle(u.to_lanes());
         let x = a.scale(bary.x) + b.scale(bary.y) + c.scale(bary.z);
         let n = wide_cross(b - a, c - a);
-        AreaPoint {
-            p: V::from_lanes(x),
-            n: V::from_lanes(n.normalize()),
-            pdf: L::TWO / n.length(),
-        }
+        planar_point(x, n, L::TWO)
     }
 
     /// |(b − a) × (c − a)|/2, the cross product in f64.
@@ -104,15 +100,8 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Triangle<V> {
 impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedTriangle<V> {
     #[inline]
     fn sample(&self, u: V::Vec2) -> ShapeSample<V> {
-        // The warp's own pdf is 0 for a sample it dropped (NaN u), whose stand-in direction may
-        // well be on the light.
         let (wi, kept) = self.tri.sample(u.to_lanes());
-        let (pdf, dist) = self.eval(V::from_lanes(wi));
-        ShapeSample {
-            wi: V::from_lanes(wi),
-            pdf: L::select(kept.gt(L::ZERO), pdf, L::ZERO),
-            dist,
-        }
+        warped(wi, kept, self.eval(V::from_lanes(wi)))
     }
 
     /// The spherical triangle's pdf of unit `wi` and the distance h/(wi·n) to the plane (wi·n

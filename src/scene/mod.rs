@@ -79,6 +79,8 @@ pub use bsdf::{Bsdf, BsdfSample, Lambert, Phong};
 pub use disk::{Disk, DiskLight, PreparedDisk};
 pub use emitter::{AreaSample, Emitter, LightSample, PreparedEmitter};
 pub use rectangle::{PreparedRectangle, Rectangle, RectangleLight};
+#[cfg(feature = "std")]
+pub(crate) use select::with_shapes;
 pub use select::{AnyPrepared, AnyShape, Light, LightChoice, PowerTable, PreparedLight, luminance};
 pub use shape::{AreaPoint, PreparedShape, Shape, ShapeSample};
 pub use sphere::{PreparedSphere, Sphere, SphereLight};

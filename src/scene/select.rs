@@ -104,12 +104,24 @@ macro_rules! shapes {
     };
 }
 
-shapes! {
-    Sphere(Sphere, PreparedSphere),
-    Disk(Disk, PreparedDisk),
-    Triangle(Triangle, PreparedTriangle),
-    Rectangle(Rectangle, PreparedRectangle),
+/// The one list of shapes: `with_shapes!(m)` calls macro `m` with it, so that everything that
+/// enumerates the shapes (here and in the test layer) follows the list. A new shape is its file
+/// and one line here.
+macro_rules! with_shapes {
+    ($m:ident) => {
+        $m! {
+            Sphere(Sphere, PreparedSphere),
+            Disk(Disk, PreparedDisk),
+            Triangle(Triangle, PreparedTriangle),
+            Rectangle(Rectangle, PreparedRectangle),
+        }
+    };
 }
+
+#[cfg(feature = "std")]
+pub(crate) use with_shapes;
+
+with_shapes!(shapes);
 
 impl Light<Vec3> {
     /// The same light in every lane of width `V`: `Light<Vec3x8>` for a packet whose lanes

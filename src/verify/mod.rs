@@ -100,9 +100,11 @@ mod lanes;
 pub mod mis1d;
 mod planar;
 pub mod registry;
+mod shapes;
 
 pub use cap::Cap;
 pub use chi2::{ChiSquare, ChiSquareResult, Disk, Domain, ExpectedCounts, Sphere, Square};
 pub use gamma::{chi2_sf, gamma_p, gamma_q, ln_gamma, sidak_alpha};
 pub use lanes::{Bits, LaneMismatch, Scalar, check_lanes};
 pub use planar::{PlanarLight, square_to_triangle, triangle_to_square};
+pub use shapes::ShapeFacts;

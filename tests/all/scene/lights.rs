@@ -14,10 +14,10 @@ use std::f64::consts::PI;
 use crate::common::TestRng;
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use mcsample::scene::{
-    AnyShape, DiskLight, Lambert, Light, LightChoice, Phong, PowerTable, RectangleLight, Sphere,
-    SphereLight, TriangleLight, luminance,
+    AnyShape, DiskLight, Emitter, Lambert, Light, LightChoice, Phong, PowerTable, RectangleLight,
+    Sphere, SphereLight, TriangleLight, luminance,
 };
-use mcsample::verify::{Cap, ChiSquare, PlanarLight, sidak_alpha};
+use mcsample::verify::{Cap, ChiSquare, PlanarLight, ShapeFacts, sidak_alpha};
 use mcsample::warp::ONE_MINUS_EPS;
 use mcsample::x8::{F32x8, Vec2x8, Vec3x8};
 
@@ -280,64 +280,7 @@ fn us(seed: u64, n: usize) -> Vec<Vec2> {
 /// shares nothing with the crate's: the quadratic of the sphere, the plane and the disk's
 /// radius, barycentrics for the triangle, (s, t) for the rectangle. `None` for a miss.
 fn ray_f64(light: &Light, p: Vec3, w: DVec3) -> Option<f64> {
-    let p = p.as_dvec3();
-    // The f32 direction is unit to 6e-8; the sphere's quadratic assumes exactly 1, and near the
-    // silhouette b² − c would amplify the difference a thousandfold.
-    let w = w.normalize();
-    match light.shape {
-        AnyShape::Sphere(s) => {
-            let oc = p - s.center.as_dvec3();
-            let r = s.radius as f64;
-            let b = oc.dot(w);
-            let c = oc.dot(oc) - r * r;
-            let disc = b * b - c;
-            if disc < 0.0 {
-                return None;
-            }
-            let (t0, t1) = (-b - disc.sqrt(), -b + disc.sqrt());
-            // A point on the surface has a root at 0 (up to rounding): skip it.
-            let eps = 1e-9 * (oc.length() + r);
-            [t0, t1].into_iter().find(|&t| t > eps)
-        }
-        AnyShape::Disk(d) => {
-            let n = d.normal.as_dvec3().normalize();
-            let t = (d.center.as_dvec3() - p).dot(n) / w.dot(n);
-            let x = p + w * t;
-            // f32 rounding of the direction (8 ulp) moves the hit by 8εt/|cos θ_l| in the plane.
-            let tol = 1e-6 * d.radius as f64 + 8.0 * f32::EPSILON as f64 * t / w.dot(n).abs();
-            (t > 0.0 && (x - d.center.as_dvec3()).length() <= d.radius as f64 + tol).then_some(t)
-        }
-        AnyShape::Triangle(tr) => {
-            let [a, b, c] = tr.v.map(|x| x.as_dvec3());
-            let n = (b - a).cross(c - a);
-            let t = (a - p).dot(n) / w.dot(n);
-            let x = p + w * t;
-            let area = n.length_squared();
-            let b1 = (x - a).cross(c - a).dot(n) / area;
-            let b2 = (b - a).cross(x - a).dot(n) / area;
-            // f32 rounding of the direction (8 ulp) moves the hit by 8εt/|cos θ_l| in the plane.
-            let edge = (b - a).length().min((c - a).length()).min((c - b).length());
-            let tol =
-                -(1e-4 + 8.0 * f32::EPSILON as f64 * t * n.length() / (w.dot(n).abs() * edge));
-            (t > 0.0 && b1 >= tol && b2 >= tol && 1.0 - b1 - b2 >= tol).then_some(t)
-        }
-        AnyShape::Rectangle(r) => {
-            let (c, ex, ey) = (r.corner.as_dvec3(), r.ex.as_dvec3(), r.ey.as_dvec3());
-            let n = ex.cross(ey);
-            let t = (c - p).dot(n) / w.dot(n);
-            let x = p + w * t - c;
-            // (s, u) from the 2×2 Gram system: the edges of a parallelogram need not be
-            // orthogonal.
-            let (xx, xy, yy) = (ex.dot(ex), ex.dot(ey), ey.dot(ey));
-            let (dx, dy) = (x.dot(ex), x.dot(ey));
-            let det = xx * yy - xy * xy;
-            let (s, u) = ((dx * yy - dy * xy) / det, (dy * xx - dx * xy) / det);
-            let edge = ex.length().min(ey.length());
-            let tol = 1e-4 + 8.0 * f32::EPSILON as f64 * t * n.length() / (w.dot(n).abs() * edge);
-            (t > 0.0 && (-tol..=1.0 + tol).contains(&s) && (-tol..=1.0 + tol).contains(&u))
-                .then_some(t)
-        }
-    }
+    light.shape.ray(p.as_dvec3(), w)
 }
 
 /// How far (rad) unit `w` from `p` lies outside the sphere's cone: sin θ − sin θmax.
@@ -491,59 +434,7 @@ fn lights_emit_on_their_normal_side() {
 /// for positive `off`. Returns pairs (direction, expected on-light) for points around the
 /// silhouette.
 fn silhouette_probes(c: &Case, off: f64) -> Vec<DVec3> {
-    let p = c.p.as_dvec3();
-    let mut out = Vec::new();
-    let push_edge_points = |out: &mut Vec<DVec3>, pts: &[DVec3]| {
-        let centroid = pts.iter().sum::<DVec3>() / pts.len() as f64;
-        for i in 0..pts.len() {
-            let (a, b) = (pts[i], pts[(i + 1) % pts.len()]);
-            for k in 1..8 {
-                let x = a + (b - a) * (k as f64 / 8.0);
-                let d = (x - p).normalize();
-                // Outward: away from the centroid's direction, across the edge's plane.
-                let plane = (a - p).cross(b - p).normalize();
-                let sign = if plane.dot(centroid - p) > 0.0 {
-                    -1.0
-                } else {
-                    1.0
-                };
-                out.push((d + plane * (sign * off)).normalize());
-            }
-        }
-    };
-    match c.light.shape {
-        AnyShape::Sphere(s) => {
-            let d = s.center.as_dvec3() - p;
-            let (axis, dist) = (d.normalize(), d.length());
-            let theta = (s.radius as f64 / dist).asin() + off;
-            let (t, b) = axis.any_orthonormal_pair();
-            for k in 0..16 {
-                let phi = k as f64 * PI / 8.0;
-                out.push(axis * theta.cos() + (t * phi.cos() + b * phi.sin()) * theta.sin());
-            }
-        }
-        AnyShape::Disk(dk) => {
-            // Rim points turned across the silhouette: the plane through the shading point and
-            // the rim's tangent line at the point is the silhouette's great circle there.
-            let n = dk.normal.as_dvec3().normalize();
-            let (t, b) = n.any_orthonormal_pair();
-            let c = dk.center.as_dvec3();
-            for k in 0..48 {
-                let phi = k as f64 * PI / 24.0;
-                let x = c + (t * phi.cos() + b * phi.sin()) * dk.radius as f64;
-                let tangent = b * phi.cos() - t * phi.sin();
-                let plane = (x - p).cross(tangent).normalize();
-                let sign = if plane.dot(c - p) > 0.0 { -1.0 } else { 1.0 };
-                out.push(((x - p).normalize() + plane * (sign * off)).normalize());
-            }
-        }
-        AnyShape::Triangle(tr) => push_edge_points(&mut out, &tr.v.map(|x| x.as_dvec3())),
-        AnyShape::Rectangle(r) => {
-            let (c0, ex, ey) = (r.corner.as_dvec3(), r.ex.as_dvec3(), r.ey.as_dvec3());
-            push_edge_points(&mut out, &[c0, c0 + ex, c0 + ex + ey, c0 + ey]);
-        }
-    }
-    out
+    c.light.shape.silhouette(c.p.as_dvec3(), off)
 }
 
 /// pdf and hit are 0 and ∞ just outside the silhouette and positive and finite just inside
@@ -558,22 +449,12 @@ fn pdf_is_zero_just_outside_the_silhouette() {
             continue; // No silhouette, or one at the horizon of the point.
         }
         // The light's angular size: its radius or an edge over its distance.
-        let size = match c.light.shape {
-            AnyShape::Sphere(s) => (s.radius / (s.center - c.p).length()) as f64,
-            AnyShape::Disk(d) => (d.radius / (d.center - c.p).length()) as f64,
-            AnyShape::Triangle(t) => ((t.v[1] - t.v[0]).length() / (t.v[0] - c.p).length()) as f64,
-            AnyShape::Rectangle(r) => (r.ex.length() / (r.corner - c.p).length()) as f64,
-        };
+        let size = c.light.shape.angular_size(c.p);
         let ulp = f32::EPSILON as f64;
         // The solid angle (f64), and the light's thinnest angular extent, Ω over its longest:
         // a light seen nearly edge-on is a sliver, and "inside" must stay inside it.
         let l64 = light64(&c.light).at(c.p.as_dvec3());
-        let centre = match c.light.shape {
-            AnyShape::Sphere(s) => s.center,
-            AnyShape::Disk(d) => d.center,
-            AnyShape::Triangle(t) => (t.v[0] + t.v[1] + t.v[2]) / 3.0,
-            AnyShape::Rectangle(r) => r.corner + (r.ex + r.ey) * 0.5,
-        } - c.p;
+        let centre = c.light.shape.centre() - c.p;
         let omega = 1.0 / l64.pdf(centre.as_dvec3().normalize());
         let thin = omega / size;
         // Beyond the slack ((4 + 64√Ω)ε for the triangle, 8ε(1 + R/r) ≈ 30ε for the rectangle,
@@ -684,90 +565,17 @@ fn pdf_integrates_to_one() {
 /// A planar light's parameter square (the bounding square for a disk), its area (of the
 /// square's image) and unit normal, relative to the shading point; `None` for the sphere.
 fn planar_of(c: &Case) -> Option<(PlanarLight, f64, DVec3)> {
-    let p = c.p;
-    Some(match c.light.shape {
-        AnyShape::Sphere(_) => return None,
-        AnyShape::Disk(dk) => {
-            let (t, b) = dk.normal.normalize().any_orthonormal_pair();
-            let r = dk.radius;
-            let corner = dk.center - p - (t + b) * r;
-            let n = dk.normal.as_dvec3().normalize();
-            (
-                PlanarLight::parallelogram(corner, t * (2.0 * r), b * (2.0 * r)),
-                4.0 * (r as f64).powi(2),
-                n,
-            )
-        }
-        AnyShape::Triangle(tr) => {
-            let [a, b, cc] = tr.v.map(|x| x - p);
-            let n = (b - a).as_dvec3().cross((cc - a).as_dvec3());
-            (
-                PlanarLight::triangle(a, b, cc),
-                0.5 * n.length(),
-                n.normalize(),
-            )
-        }
-        AnyShape::Rectangle(r) => {
-            let n = r.ex.as_dvec3().cross(r.ey.as_dvec3());
-            (
-                PlanarLight::parallelogram(r.corner - p, r.ex, r.ey),
-                n.length(),
-                n.normalize(),
-            )
-        }
-    })
+    c.light.shape.planar(c.p)
 }
 
 /// A cap of directions from the shading point that holds the light.
 fn cap_of(c: &Case) -> Cap {
-    let p = c.p;
-    match c.light.shape {
-        AnyShape::Sphere(s) => {
-            let d = (s.center - p).as_dvec3();
-            let s2 = (s.radius as f64 / d.length()).powi(2);
-            if s2 < 1.0 {
-                Cap::new(d, 1.05 * s2 / (1.0 + (1.0 - s2).sqrt()) + 1e-12)
-            } else {
-                Cap::z(2.0)
-            }
-        }
-        AnyShape::Disk(dk) => {
-            let (t, b) = dk.normal.normalize().any_orthonormal_pair();
-            let rim: Vec<Vec3> = (0..64)
-                .map(|k| {
-                    let (sn, cs) = (k as f32 * std::f32::consts::TAU / 64.0).sin_cos();
-                    dk.center - p + (t * cs + b * sn) * dk.radius
-                })
-                .collect();
-            Cap::around(&rim)
-        }
-        AnyShape::Triangle(t) => Cap::around(&t.v.map(|x| x - p)),
-        AnyShape::Rectangle(r) => {
-            let c0 = r.corner - p;
-            Cap::around(&[c0, c0 + r.ex, c0 + r.ey, c0 + r.ex + r.ey])
-        }
-    }
+    c.light.shape.cap(c.p)
 }
 
-/// The same light in f64.
+/// The same light in f64 (exact: f32 to f64 is exact).
 fn light64(l: &Light) -> Light<DVec3> {
-    let d = |v: Vec3| v.as_dvec3();
-    match l.shape {
-        AnyShape::Sphere(s) => Light::from(SphereLight::new(d(s.center), s.radius as f64, d(l.le))),
-        AnyShape::Disk(k) => Light::from(DiskLight::new(
-            d(k.center),
-            d(k.normal),
-            k.radius as f64,
-            d(l.le),
-        )),
-        AnyShape::Triangle(t) => {
-            let [a, b, c] = t.v.map(d);
-            Light::from(TriangleLight::new(a, b, c, d(l.le)))
-        }
-        AnyShape::Rectangle(r) => {
-            Light::from(RectangleLight::new(d(r.corner), d(r.ex), d(r.ey), d(l.le)))
-        }
-    }
+    l.splat()
 }
 
 /// χ² of every configuration's samples (f32) against its pdf, zoomed onto the cap that holds
@@ -933,42 +741,10 @@ fn packets_equal_scalars() {
 
 /// Eight lights of one kind as one packet light.
 fn pack(ls: &[Light]) -> Light<Vec3x8> {
-    let v3 =
-        |f: &dyn Fn(&Light) -> Vec3| Vec3x8::from(std::array::from_fn::<Vec3, 8, _>(|i| f(&ls[i])));
-    let f1 =
-        |f: &dyn Fn(&Light) -> f32| F32x8::from(std::array::from_fn::<f32, 8, _>(|i| f(&ls[i])));
-    macro_rules! get {
-        ($kind:ident, $x:ident => $e:expr) => {
-            |l: &Light| match l.shape {
-                AnyShape::$kind($x) => $e,
-                _ => unreachable!(),
-            }
-        };
-    }
-    match ls[0].shape {
-        AnyShape::Sphere(_) => Light::from(SphereLight::new(
-            v3(&get!(Sphere, s => s.center)),
-            f1(&get!(Sphere, s => s.radius)),
-            v3(&|l: &Light| l.le),
-        )),
-        AnyShape::Disk(_) => Light::from(DiskLight::new(
-            v3(&get!(Disk, s => s.center)),
-            v3(&get!(Disk, s => s.normal)),
-            f1(&get!(Disk, s => s.radius)),
-            v3(&|l: &Light| l.le),
-        )),
-        AnyShape::Triangle(_) => Light::from(TriangleLight::new(
-            v3(&get!(Triangle, s => s.v[0])),
-            v3(&get!(Triangle, s => s.v[1])),
-            v3(&get!(Triangle, s => s.v[2])),
-            v3(&|l: &Light| l.le),
-        )),
-        AnyShape::Rectangle(_) => Light::from(RectangleLight::new(
-            v3(&get!(Rectangle, s => s.corner)),
-            v3(&get!(Rectangle, s => s.ex)),
-            v3(&get!(Rectangle, s => s.ey)),
-            v3(&|l: &Light| l.le),
-        )),
+    let shapes: [AnyShape; 8] = std::array::from_fn(|i| ls[i].shape);
+    Emitter {
+        shape: AnyShape::pack(&shapes).expect("eight lights of one kind"),
+        le: Vec3x8::from(std::array::from_fn::<Vec3, 8, _>(|i| ls[i].le)),
     }
 }
 
@@ -980,46 +756,7 @@ fn area_samples_lie_on_the_light() {
         for _ in 0..2000 {
             let a = c.light.sample_area(c.p, rng.u2());
             let x = a.p.as_dvec3();
-            let (on, area, n) = match c.light.shape {
-                AnyShape::Sphere(s) => {
-                    let r = s.radius as f64;
-                    let d = x - s.center.as_dvec3();
-                    (
-                        (d.length() - r).abs() <= 1e-6 * (r + s.center.length() as f64),
-                        4.0 * PI * r * r,
-                        d.normalize(),
-                    )
-                }
-                AnyShape::Disk(k) => {
-                    let n = k.normal.as_dvec3().normalize();
-                    let d = x - k.center.as_dvec3();
-                    let scale = 1e-6 * (k.radius as f64 + k.center.length() as f64);
-                    (
-                        d.dot(n).abs() <= scale && d.length() <= k.radius as f64 + scale,
-                        PI * (k.radius as f64).powi(2),
-                        n,
-                    )
-                }
-                AnyShape::Triangle(t) => {
-                    let [p0, p1, p2] = t.v.map(|v| v.as_dvec3());
-                    let n = (p1 - p0).cross(p2 - p0);
-                    let scale = 1e-6 * (p0.length() + (p1 - p0).length());
-                    (
-                        (x - p0).dot(n.normalize()).abs() <= scale,
-                        0.5 * n.length(),
-                        n.normalize(),
-                    )
-                }
-                AnyShape::Rectangle(r) => {
-                    let n = r.ex.as_dvec3().cross(r.ey.as_dvec3());
-                    let scale = 1e-6 * (r.corner.length() as f64 + r.ex.length() as f64);
-                    (
-                        (x - r.corner.as_dvec3()).dot(n.normalize()).abs() <= scale,
-                        n.length(),
-                        n.normalize(),
-                    )
-                }
-            };
+            let (on, area, n) = c.light.shape.surface(x);
             assert!(on, "{}: {x} is not on the light", c.name);
             assert!(
                 (a.pdf as f64 * area - 1.0).abs() < 1e-5,

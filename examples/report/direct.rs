@@ -9,7 +9,7 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use glam::Vec3;
-use mcsample::direct::{self, Config as DirectConfig, Lights, Strategy};
+use mcsample::direct::{self, Config as DirectConfig, Strategy};
 use mcsample::seq::{Generator, Sequence};
 use mcsample::verify::direct::{
     DirectRun, DirectScene, analytic_scenes, grid_scenes, quadrature_scenes, run,
@@ -54,8 +54,9 @@ const SINGLE: [Strategy; 6] = [
 
 /// The scalar path's ns per estimate over `count` estimates.
 fn scalar_ns(scene: &DirectScene, strategy: Strategy, config: DirectConfig, count: u32) -> f64 {
-    let lights = Lights::uniform(&scene.lights);
-    let mut visible = |_: Vec3, _: Vec3| true;
+    let mut table = Vec::new();
+    let lights = scene.lights(&mut table);
+    let mut visible = |from: Vec3, to: Vec3| scene.visible(from, to);
     let t = Instant::now();
     for e in 0..count {
         let mut s = Sequence {

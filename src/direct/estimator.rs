@@ -171,6 +171,16 @@ where
         self.light_sample_with(u, v.x)
     }
 
+    /// The light technique's density along world direction `wi`: Σⱼ pmfⱼ·pdfⱼ over the lights.
+    pub(super) fn mixture_pdf(&mut self, wi: V3<L>) -> L {
+        let mut pl = L::ZERO;
+        for l in 0..self.lights.lights().len() {
+            let pdf = self.prepared(l).pdf(V::from_lanes(wi));
+            pl = pdf.mul_add(L::c(f64::from(self.lights.pmf(l))), pl);
+        }
+        pl
+    }
+
     /// Σⱼ over the lights along world direction `wi`: weight(pmfⱼ·pdfⱼ)·fcos·Leⱼ behind a shadow
     /// ray each, with roulette from `ru`.
     pub(super) fn along(

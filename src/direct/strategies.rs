@@ -223,26 +223,32 @@ where
         };
         let second = |j: u32| cross && j % 2 == 1;
         let (cl, cb) = (L::c(f64::from(nl)), L::c(f64::from(nb)));
+        // Both techniques estimate one integrand over directions, F(ω) = Σⱼ f·cos θ·Leⱼ·Vⱼ,
+        // with one density each: the BSDF's, and the light technique's mixture
+        // p_L(ω) = Σⱼ pmfⱼ·pdfⱼ(ω) (choose a light, then a direction from it). So a light sample
+        // collects every light along its direction, as a BSDF sample does, whichever light it
+        // came from: with the chosen light's term alone, the two techniques would estimate
+        // different integrands where lights overlap, and the fitted α would bias the estimate.
         for s in 0..nl {
             let x = self.light_sample(s);
             let ru = self.u(s, 1).y;
-            let pb = self.bsdf_pdf(x.wi);
-            // Roulette by the balance-weighted contribution; the accumulator takes f itself.
-            let w = mis::balance(cl, x.pdf, cb, pb);
-            let kept = self.shadow(x.fcos_le.scale(w), x.to, ru);
-            let f = V3::select(w.gt(L::ZERO), scale_div(kept, w), V3::all(L::ZERO));
-            push(if second(s) { &mut acc1 } else { &mut acc0 }, f, x.pdf, pb);
+            let kept_sample = x.pdf.gt(L::ZERO);
+            let pl = self.mixture_pdf(x.wi);
+            // A dropped light sample (pdf 0) is counted and adds nothing.
+            let pb = L::select(kept_sample, self.bsdf_pdf(x.wi), L::ZERO);
+            let pl = L::select(kept_sample, pl, L::ZERO);
+            let fcos = V3::select(kept_sample, self.fcos(x.wi), V3::all(L::ZERO));
+            // Roulette by the balance-weighted contribution; the accumulator takes F itself.
+            let w = mis::balance(cl, pl, cb, pb);
+            let kept = self.along(x.wi, fcos, ru, |_| w / pl);
+            let f = V3::select(w.gt(L::ZERO), scale_div(kept, w / pl), V3::all(L::ZERO));
+            push(if second(s) { &mut acc1 } else { &mut acc0 }, f, pl, pb);
         }
         for j in 0..nb {
             let s = nl + j;
             let (wi, fcos, pb) = self.bsdf_sample(s);
             let ru = self.u(s, 1).y;
-            // The light technique's density along wi: Σⱼ pmfⱼ·pdfⱼ over the lights it meets.
-            let mut pl = L::ZERO;
-            for l in 0..self.lights.lights().len() {
-                let pdf = self.prepared(l).pdf(V::from_lanes(wi));
-                pl = pdf.mul_add(L::c(f64::from(self.lights.pmf(l))), pl);
-            }
+            let pl = self.mixture_pdf(wi);
             let w = mis::balance(cb, pb, cl, pl);
             let kept = self.along(wi, fcos, ru, |_| w / pb);
             let f = V3::select(w.gt(L::ZERO), scale_div(kept, w / pb), V3::all(L::ZERO));

@@ -3,8 +3,9 @@
 //! target share.
 //!
 //! - [`analytic_scenes`]: a Lambertian point (albedo 1, so L = E/π) under a sphere above the
-//!   horizon, a sphere partly below it, a rectangle and a disk on its axis, with references
-//!   from [`crate::reference`];
+//!   horizon, a sphere partly below it, a rectangle and a disk on its axis, and lights that
+//!   overlap in direction (one hiding another, or not; chosen uniformly or by power), with
+//!   references from [`crate::reference`];
 //! - [`quadrature_scenes`]: a Lambert and a Phong point under a sphere light, with references by
 //!   [`sphere_light_quadrature`];
 //! - [`grid_scenes`]: the lecture's MIS figure, Phong exponents {10, 100, 1000, 10000} × sphere
@@ -25,7 +26,7 @@ use crate::estimate::MeanVar;
 use crate::lane::F32x8;
 use crate::point::Point3;
 use crate::scene::{
-    Bsdf, BsdfSample, DiskLight, Lambert, Light, Phong, RectangleLight, SphereLight,
+    Bsdf, BsdfSample, DiskLight, Lambert, Light, Phong, PowerTable, RectangleLight, SphereLight,
 };
 use crate::seq::{Generator, Sequence};
 use crate::x8::{U32x8, Vec3x8};
@@ -93,6 +94,44 @@ pub struct DirectScene {
     pub reference: f64,
     /// True where the reference is a closed form rather than quadrature.
     pub analytic: bool,
+    /// Spheres (centre, radius) that block shadow rays: the caller's visibility. A light may be
+    /// one of them, hiding what is behind it.
+    pub occluders: Vec<(Vec3, f32)>,
+    /// Lights chosen in proportion to power rather than uniformly.
+    pub by_power: bool,
+}
+
+impl DirectScene {
+    /// The scene's lights as the estimator takes them, chosen by power (a table built in
+    /// `table`) or uniformly.
+    pub fn lights<'a>(&'a self, table: &'a mut Vec<f32>) -> Lights<'a> {
+        if self.by_power {
+            table.resize(self.lights.len(), 0.0);
+            Lights::by_power(&self.lights, PowerTable::new(&self.lights, table))
+        } else {
+            Lights::uniform(&self.lights)
+        }
+    }
+
+    /// Whether the segment from `from` to `to` is clear of every occluder (an end on an
+    /// occluder's surface is not blocked by it).
+    pub fn visible(&self, from: Vec3, to: Vec3) -> bool {
+        let (o, e) = (from.as_dvec3(), to.as_dvec3());
+        let len = (e - o).length();
+        let d = (e - o) / len;
+        self.occluders.iter().all(|&(c, r)| {
+            let oc = o - c.as_dvec3();
+            let r = f64::from(r);
+            let b = oc.dot(d);
+            let disc = b * b - (oc.dot(oc) - r * r);
+            if disc <= 0.0 {
+                return true;
+            }
+            let (t0, t1) = (-b - disc.sqrt(), -b + disc.sqrt());
+            let end = len * (1.0 - 1e-4);
+            !(t0 > 1e-6 * len && t0 < end || t1 > 1e-6 * len && t1 < end)
+        })
+    }
 }
 
 fn lambert_point() -> (Material, ShadingPoint) {
@@ -122,6 +161,8 @@ pub fn analytic_scenes() -> Vec<DirectScene> {
         at,
         reference: e / PI,
         analytic: true,
+        occluders: Vec::new(),
+        by_power: false,
     };
     // The light's own f32 geometry is the one the reference sees.
     let above = sphere_at(0.5, 4.0, 1.0);
@@ -166,6 +207,80 @@ pub fn analytic_scenes() -> Vec<DirectScene> {
             "disk_axis",
             Light::from(disk),
             crate::reference::disk_irradiance_on_axis(1.5, 2.0),
+        ),
+    ]
+    .into_iter()
+    .chain(overlapping_scenes())
+    .collect()
+}
+
+/// Lights that overlap in direction, which every other scene avoids: a sphere of radius 0.3 at
+/// (0, 0, 1) in front of a disk of radius 1 at (0, 0, 2) facing down, over the Lambertian point
+/// (albedo 1, n = +z, ωo towards (0.3, 0, 1)).
+/// - `overlap_sphere_disk`: independent emitters, L = 0.09 + 0.2 = 0.29 (the sphere's
+///   π sin²σ cos θ over π, and the disk's R²/(R² + h²)).
+/// - `overlap_occluded`: the sphere also hides the disk behind it; the part hidden is the
+///   sphere's own cone, so L = 0.2.
+/// - `overlap_three_by_power`: a 4 × 4 square at height 3 facing down added behind both, the
+///   three chosen by power.
+fn overlapping_scenes() -> Vec<DirectScene> {
+    use core::f64::consts::PI;
+    let m = Material::Lambert(Lambert::new(Vec3::ONE));
+    let at = ShadingPoint {
+        p: Vec3::ZERO,
+        n: Vec3::Z,
+        wo: Vec3::new(0.3, 0.0, 1.0).normalize(),
+    };
+    let sphere = SphereLight::new(Vec3::Z, 0.3, Vec3::ONE);
+    let disk = DiskLight::new(Vec3::new(0.0, 0.0, 2.0), Vec3::NEG_Z, 1.0, Vec3::ONE);
+    let square = RectangleLight::new(
+        Vec3::new(-2.0, -2.0, 3.0),
+        Vec3::new(0.0, 4.0, 0.0),
+        Vec3::new(4.0, 0.0, 0.0),
+        Vec3::ONE,
+    );
+    let e_sphere = crate::reference::sphere_irradiance(libm::asin(0.3), 0.0);
+    let e_disk = crate::reference::disk_irradiance_on_axis(1.0, 2.0);
+    let e_square = crate::reference::polygon_irradiance(
+        [0.0, 0.0, 1.0],
+        &[
+            [-2.0, -2.0, 3.0],
+            [-2.0, 2.0, 3.0],
+            [2.0, 2.0, 3.0],
+            [2.0, -2.0, 3.0],
+        ],
+    );
+    let scene =
+        |name: &str, lights: Vec<Light>, e: f64, occluded: bool, by_power: bool| DirectScene {
+            name: name.into(),
+            lights,
+            material: m,
+            at,
+            reference: e / PI,
+            analytic: true,
+            occluders: if occluded {
+                std::vec![(sphere.shape.center, sphere.shape.radius)]
+            } else {
+                Vec::new()
+            },
+            by_power,
+        };
+    let two = || std::vec![Light::from(sphere), Light::from(disk)];
+    std::vec![
+        scene(
+            "overlap_sphere_disk",
+            two(),
+            e_sphere + e_disk,
+            false,
+            false
+        ),
+        scene("overlap_occluded", two(), e_disk, true, false),
+        scene(
+            "overlap_three_by_power",
+            std::vec![Light::from(sphere), Light::from(disk), Light::from(square)],
+            e_sphere + e_disk + e_square,
+            false,
+            true,
         ),
     ]
 }
@@ -274,6 +389,8 @@ pub fn quadrature_scenes() -> Vec<DirectScene> {
             },
             reference,
             analytic: false,
+            occluders: Vec::new(),
+            by_power: false,
         });
     }
     scenes
@@ -313,6 +430,8 @@ pub fn grid_scenes() -> Vec<DirectScene> {
                 },
                 reference,
                 analytic: false,
+                occluders: Vec::new(),
+                by_power: false,
             });
         }
     }
@@ -355,7 +474,8 @@ pub fn run(
     estimates: u64,
     (generator, seed): (Generator, u32),
 ) -> DirectRun {
-    let lights = Lights::uniform(&scene.lights);
+    let mut table = Vec::new();
+    let lights = scene.lights(&mut table);
     let material = scene.material.splat();
     let at = ShadingPoint {
         p: Vec3x8::splat(scene.at.p),
@@ -366,7 +486,20 @@ pub fn run(
     let mut stats = MeanVar::default();
     let mut sq = 0.0;
     let mut rays = 0u64;
-    let mut visible = |m: F32x8, _: Vec3x8, _: Vec3x8| m;
+    let mut visible = |m: F32x8, from: Vec3x8, to: Vec3x8| {
+        if scene.occluders.is_empty() {
+            return m;
+        }
+        let (from, to) = (from.to_array(), to.to_array());
+        let clear = F32x8::new(core::array::from_fn(|i| {
+            if scene.visible(from[i], to[i]) {
+                f32::from_bits(u32::MAX)
+            } else {
+                0.0
+            }
+        }));
+        m & clear
+    };
     for packet in 0..estimates.div_ceil(8) {
         let first = U32x8::new(core::array::from_fn(|i| {
             ((packet * 8 + i as u64) as u32).wrapping_mul(n)

@@ -1,5 +1,5 @@
 //! The direct-lighting estimator on arbitrary scenes: up to three lights of every kind with
-//! arbitrary geometry and radiance, any shading point, normal and ωo, Lambert or Phong, every
+//! arbitrary geometry and radiance (or lined up behind one another, overlapping in direction), any shading point, normal and ωo, Lambert or Phong, every
 //! strategy, small sample counts, any roulette threshold and sequence seed. Invariants: no
 //! panic; the radiance is finite, and ≥ 0 except for optimal MIS, whose weights can be negative
 //! (reflectances in [0, 1], radiance ≥ 0); it is 0 when
@@ -31,9 +31,15 @@ fuzz_target!(|data: &[u8]| {
     let v = |i: usize| Vec3::new(f[i], f[i + 1], f[i + 2]);
     let le = v(21).abs();
     let kinds = byte(0);
+    // With bit 1 of byte 1 the lights overlap in direction: light k stands at (1 + k) times the
+    // first light's offset from the shading point, behind it.
+    let overlap = byte(1) & 2 != 0;
     let mut lights = Vec::new();
     for k in 0..(kinds % 4) {
-        let (a, b, c, r) = (v(9 + 3 * k as usize % 9), v(12), v(15), f[18]);
+        let (mut a, b, c, r) = (v(9 + 3 * k as usize % 9), v(12), v(15), f[18]);
+        if overlap {
+            a = v(0) + (v(9) - v(0)) * (1.0 + f32::from(k));
+        }
         lights.push(match (kinds >> (2 + 2 * k)) & 3 {
             0 => Light::from(SphereLight::new(a, r, le)),
             1 => Light::from(DiskLight::new(a, b, r, le)),

@@ -1,84 +1,42 @@
-//! The BSDFs, tested on the sphere of directions: Lambert's hemisphere, the whole sphere for a
-//! Phong BSDF with a diffuse part, and for a pure sharp Phong lobe the cap about the mirror
-//! direction outside which cosⁿα is below e⁻¹⁵ (1 − cos α > 15/n).
+//! The BSDFs, tested on the sphere of directions: Lambert's hemisphere (cos θ decides its pdf),
+//! the whole sphere for a Phong BSDF with a diffuse part, and for a pure sharp Phong lobe the
+//! cap about the mirror direction outside which cosⁿα is below e⁻¹⁵ (1 − cos α > 15/n). The
+//! Phong BSDF's parameter is its exponent.
 
-use glam::{DVec3, Vec3};
+use glam::DVec3;
 
-use super::{Evidence, Kind, NanPolicy, Sampler, on_cap};
+use std::boxed::Box;
+
+use super::{Evidence, Facts, Kind, Param, TestDomain};
 use crate::registry::{BsdfLambert, BsdfPhong};
-use crate::verify::{Cap, ChiSquareResult};
+use crate::verify::Cap;
 
 impl Evidence for BsdfLambert {
-    fn kind(&self) -> Kind {
-        Kind::Bsdf
+    fn facts(&self) -> Facts {
+        Facts {
+            kind: Kind::Bsdf,
+            param: Param::None,
+            test: TestDomain::Cap(Cap::z(1.0)),
+        }
     }
-    fn nan_policy(&self) -> NanPolicy {
-        NanPolicy::NanOut
-    }
-    fn nan_param(&self) -> bool {
-        false
-    }
-    fn is_proper(&self) -> bool {
-        true
-    }
-    fn with_param(&self, _: f32) -> Option<Sampler> {
-        None
-    }
-    fn with_geometry(&self, _: [Vec3; 3]) -> Option<Sampler> {
-        None
-    }
-    fn roundtrip_bound(&self) -> Option<[f32; 2]> {
-        None
-    }
-    fn chi_square(
-        &self,
-        samples: usize,
-        sample: &dyn Fn(usize) -> Vec3,
-        pdf: &dyn Fn(Vec3) -> f32,
-    ) -> ChiSquareResult {
-        on_cap(Cap::z(1.0), samples, sample, pdf)
-    }
-    /// cos θ decides the pdf.
     fn pdf_reads(&self) -> &'static [usize] {
         &[2]
     }
 }
 
 impl Evidence for BsdfPhong {
-    fn kind(&self) -> Kind {
-        Kind::Bsdf
-    }
-    fn nan_policy(&self) -> NanPolicy {
-        NanPolicy::NanOut
-    }
-    fn nan_param(&self) -> bool {
-        self.n.is_nan()
-    }
-    fn is_proper(&self) -> bool {
-        !self.n.is_nan()
-    }
-    /// The exponent.
-    fn with_param(&self, n: f32) -> Option<Sampler> {
-        Some(BsdfPhong { n, ..*self }.into())
-    }
-    fn with_geometry(&self, _: [Vec3; 3]) -> Option<Sampler> {
-        None
-    }
-    fn roundtrip_bound(&self) -> Option<[f32; 2]> {
-        None
-    }
-    fn chi_square(
-        &self,
-        samples: usize,
-        sample: &dyn Fn(usize) -> Vec3,
-        pdf: &dyn Fn(Vec3) -> f32,
-    ) -> ChiSquareResult {
-        let cap = if self.kd == 0.0 && self.n >= 100.0 {
-            let wo = self.wo.as_dvec3();
-            Cap::new(DVec3::new(-wo.x, -wo.y, wo.z), 15.0 / self.n as f64)
+    fn facts(&self) -> Facts {
+        let s = *self;
+        let cap = if s.kd == 0.0 && s.n >= 100.0 {
+            let wo = s.wo.as_dvec3();
+            Cap::new(DVec3::new(-wo.x, -wo.y, wo.z), 15.0 / s.n as f64)
         } else {
             Cap::z(2.0)
         };
-        on_cap(cap, samples, sample, pdf)
+        Facts {
+            kind: Kind::Bsdf,
+            param: Param::Scalar(s.n, Box::new(move |n| BsdfPhong { n, ..s }.into())),
+            test: TestDomain::Cap(cap),
+        }
     }
 }

@@ -2,84 +2,42 @@
 
 use glam::{Vec2, Vec3};
 
-use super::{Evidence, Kind, NanPolicy, Sampler, on_cap};
-use crate::verify::{Cap, ChiSquareResult};
+use super::{Evidence, Facts, Kind, Param, RoundTrip, TestDomain};
+use crate::verify::Cap;
 use crate::warp::{CosineHemisphere, UniformHemisphere};
 
+/// u₁ is the azimuth: periodic, and undetermined at the pole u₀ = 1.
 impl Evidence for UniformHemisphere {
-    fn kind(&self) -> Kind {
-        Kind::Warp
+    fn facts(&self) -> Facts {
+        Facts {
+            kind: Kind::Warp(RoundTrip {
+                bound: [3e-7, 3e-7],
+                u1_periodic: true,
+            }),
+            param: Param::None,
+            test: TestDomain::Cap(Cap::z(1.0)),
+        }
     }
-    fn nan_policy(&self) -> NanPolicy {
-        NanPolicy::NanOut
-    }
-    fn nan_param(&self) -> bool {
-        false
-    }
-    fn is_proper(&self) -> bool {
-        true
-    }
-    fn with_param(&self, _: f32) -> Option<Sampler> {
-        None
-    }
-    fn with_geometry(&self, _: [Vec3; 3]) -> Option<Sampler> {
-        None
-    }
-    fn roundtrip_bound(&self) -> Option<[f32; 2]> {
-        Some([3e-7, 3e-7])
-    }
-    fn chi_square(
-        &self,
-        samples: usize,
-        sample: &dyn Fn(usize) -> Vec3,
-        pdf: &dyn Fn(Vec3) -> f32,
-    ) -> ChiSquareResult {
-        on_cap(Cap::z(1.0), samples, sample, pdf)
-    }
-    fn u1_periodic(&self) -> bool {
-        true
-    }
-    /// u₁ is the azimuth, undetermined at the pole u₀ = 1.
     fn determined(&self, u: Vec2, _: Vec3) -> [bool; 2] {
         [true, u.x < 1.0 - 1e-6]
     }
 }
 
+/// cos θ decides the pdf; the inverse is the concentric disk's of (x, y).
 impl Evidence for CosineHemisphere {
-    fn kind(&self) -> Kind {
-        Kind::Warp
+    fn facts(&self) -> Facts {
+        Facts {
+            kind: Kind::Warp(RoundTrip {
+                bound: [5e-7, 5e-7],
+                u1_periodic: false,
+            }),
+            param: Param::None,
+            test: TestDomain::Cap(Cap::z(1.0)),
+        }
     }
-    fn nan_policy(&self) -> NanPolicy {
-        NanPolicy::NanOut
-    }
-    fn nan_param(&self) -> bool {
-        false
-    }
-    fn is_proper(&self) -> bool {
-        true
-    }
-    fn with_param(&self, _: f32) -> Option<Sampler> {
-        None
-    }
-    fn with_geometry(&self, _: [Vec3; 3]) -> Option<Sampler> {
-        None
-    }
-    fn roundtrip_bound(&self) -> Option<[f32; 2]> {
-        Some([5e-7, 5e-7])
-    }
-    fn chi_square(
-        &self,
-        samples: usize,
-        sample: &dyn Fn(usize) -> Vec3,
-        pdf: &dyn Fn(Vec3) -> f32,
-    ) -> ChiSquareResult {
-        on_cap(Cap::z(1.0), samples, sample, pdf)
-    }
-    /// cos θ decides the pdf.
     fn pdf_reads(&self) -> &'static [usize] {
         &[2]
     }
-    /// The concentric inverse of (x, y).
     fn inverse_reads(&self) -> &'static [usize] {
         &[0, 1]
     }

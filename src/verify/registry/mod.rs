@@ -32,7 +32,8 @@ mod spherical_triangle;
 mod tent;
 mod triangle;
 
-use glam::{DVec3, Vec2, Vec3};
+use glam::{DVec2, DVec3, Vec2, Vec3};
+use std::boxed::Box;
 use std::format;
 use std::string::{String, ToString};
 use std::vec;
@@ -52,53 +53,80 @@ pub enum NanPolicy {
     ZeroPdf,
 }
 
-/// What a sampler is, for the checks that differ by kind.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// What a sampler is, which decides its policy on bad input and whether it has an inverse.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Kind {
-    /// A warp of the square: clamped u gives a point of the domain.
-    Warp,
-    /// A spherical polygon: its sample lies on the light with a positive pdf, or is dropped.
-    Polygon,
-    /// A light of the scene, seen from the origin: as a polygon, and without an inverse.
+    /// A warp of the square: NaN in u gives NaN out, clamped u a point of the domain, and its
+    /// inverse comes back within the round trip's bound.
+    Warp(RoundTrip),
+    /// A spherical polygon: NaN in u drops the sample, and its sample lies on the light with a
+    /// positive pdf or is dropped; an inverse as for a warp.
+    Polygon(RoundTrip),
+    /// A light of the scene seen from the origin: as a polygon, without an inverse.
     Light,
-    /// A BSDF: a warp without an inverse.
+    /// A BSDF: as a warp, without an inverse.
     Bsdf,
+}
+
+/// The round trip inverse(sample(u)) ≈ u of a sampler with an inverse.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RoundTrip {
+    /// The largest |inverse(sample(u)) − u| per coordinate over the whole square.
+    pub bound: [f32; 2],
+    /// True where u₁ is an azimuth, periodic with period 1: its error is taken modulo 1.
+    pub u1_periodic: bool,
+}
+
+/// The domain of a sampler's χ² test (Mitsuba's method, [`ChiSquare`]).
+#[derive(Clone, Copy, Debug)]
+pub enum TestDomain {
+    /// The unit disk, on the point's (x, y).
+    Disk,
+    /// A cap of the sphere of directions, zoomed onto the whole sphere.
+    Cap(Cap),
+    /// The unit square, through an equal-area map of the samples.
+    Square {
+        /// Sample → square.
+        to: fn(DVec3) -> DVec2,
+        /// Square → sample.
+        from: fn(DVec2) -> Vec3,
+        /// The density on the square over the sampler's pdf (the map's Jacobian).
+        jacobian: f64,
+    },
+    /// A planar light's own parameter square.
+    Light(PlanarLight),
+}
+
+/// What the sweep and the fuzz targets vary, with the sampler rebuilt around a new value.
+pub enum Param {
+    /// Nothing to vary.
+    None,
+    /// A scalar parameter.
+    Scalar(f32, Box<dyn Fn(f32) -> Sampler>),
+    /// The geometry: vertices, or a corner and edges.
+    Geometry([Vec3; 3], Box<dyn Fn([Vec3; 3]) -> Sampler>),
+}
+
+/// The facts of a sampler ([`Evidence::facts`]): a struct without a default, so that the
+/// compiler names each one a new sampler leaves out.
+pub struct Facts {
+    /// What it is.
+    pub kind: Kind,
+    /// What the sweep and the fuzz targets vary.
+    pub param: Param,
+    /// The domain of its χ² test.
+    pub test: TestDomain,
 }
 
 /// The std part of a sampler of the registry: what the evidence checks it against.
 ///
-/// The required items state facts that differ from sampler to sampler; the compiler names each
-/// one a new sampler lacks. The provided items are exemptions, and their defaults grant none:
-/// each is the strictest claim (every coordinate read, every coordinate NaN, u determined
-/// everywhere), so that a sampler that needs one fails its checks until it states it.
+/// [`facts`](Evidence::facts) states what differs from sampler to sampler. The provided items
+/// are exemptions, and their defaults grant none: each is the strictest claim (every coordinate
+/// read, every coordinate NaN, u determined everywhere), so that a sampler that needs one fails
+/// its checks until it states it.
 pub trait Evidence {
-    /// What it is.
-    fn kind(&self) -> Kind;
-    /// What NaN in u, or a NaN parameter, gives.
-    fn nan_policy(&self) -> NanPolicy;
-    /// True when a parameter is NaN, so that every sample follows the NaN policy.
-    fn nan_param(&self) -> bool;
-    /// True when the parameters and geometry are valid, so that every non-NaN u must give a
-    /// sample with a positive, finite pdf.
-    fn is_proper(&self) -> bool;
-    /// The same sampler with its scalar parameter replaced by `p` (the sweep's special values
-    /// and the fuzzed ones); `None` for a sampler without one.
-    fn with_param(&self, p: f32) -> Option<Sampler>;
-    /// The same sampler towards other geometry (vertices, or corner and edges); `None` for a
-    /// sampler without geometry.
-    fn with_geometry(&self, v: [Vec3; 3]) -> Option<Sampler>;
-    /// The largest |inverse(sample(u)) − u| per coordinate over the whole square; `None`
-    /// exactly when the sampler has no inverse.
-    fn roundtrip_bound(&self) -> Option<[f32; 2]>;
-    /// Mitsuba's χ² test of `samples` samples `sample(i)` against `pdf`, on the domain that
-    /// suits the sampler: the disk, a cap of the sphere zoomed onto the whole, the square
-    /// through an equal-area map, or a light's own parameter square ([`PlanarLight`]).
-    fn chi_square(
-        &self,
-        samples: usize,
-        sample: &dyn Fn(usize) -> Vec3,
-        pdf: &dyn Fn(Vec3) -> f32,
-    ) -> ChiSquareResult;
+    /// What it is, what may vary, and the domain of its χ² test.
+    fn facts(&self) -> Facts;
 
     /// The coordinates of a point that the pdf reads: NaN in one gives pdf 0.
     fn pdf_reads(&self) -> &'static [usize] {
@@ -117,11 +145,6 @@ pub trait Evidence {
     /// True when `x` is the documented point of a dropped sample that may be non-finite (a
     /// degenerate rectangle's corner).
     fn is_corner(&self, _x: Vec3) -> bool {
-        false
-    }
-    /// True where u₁ is an azimuth, periodic with period 1: its round-trip error is taken
-    /// modulo 1.
-    fn u1_periodic(&self) -> bool {
         false
     }
     /// Which coordinates of u the sample x = sample(u) determines (not at a pole of the
@@ -192,32 +215,6 @@ pub fn degenerate_polygons() -> Vec<[Vec3; 3]> {
     ]
 }
 
-/// The χ² test of directions over a cap of the sphere zoomed onto the whole.
-fn on_cap(
-    cap: Cap,
-    samples: usize,
-    sample: &dyn Fn(usize) -> Vec3,
-    pdf: &dyn Fn(Vec3) -> f32,
-) -> ChiSquareResult {
-    cap.test(
-        ChiSquare::sphere().samples(samples).ires(6),
-        sample,
-        |w: DVec3| pdf(w.as_vec3()) as f64,
-    )
-}
-
-/// The χ² test of directions (or points) towards a planar light, on its parameter square.
-fn on_light(
-    light: PlanarLight,
-    samples: usize,
-    sample: &dyn Fn(usize) -> Vec3,
-    pdf: &dyn Fn(Vec3) -> f32,
-) -> ChiSquareResult {
-    light.test(ChiSquare::square().samples(samples), sample, |w: DVec3| {
-        pdf(w.as_vec3()) as f64
-    })
-}
-
 impl Sampler {
     /// The name the report and the JSON use: the function, and its parameters where it has any.
     pub fn name(&self) -> String {
@@ -226,12 +223,12 @@ impl Sampler {
 
     /// What it is.
     pub fn kind(&self) -> Kind {
-        self.evidence().kind()
+        self.evidence().facts().kind
     }
 
     /// True for the spherical triangle and rectangle, the warps with geometry.
     pub fn is_polygon(&self) -> bool {
-        self.kind() == Kind::Polygon
+        matches!(self.kind(), Kind::Polygon(_))
     }
 
     /// True for the lights, sampled from the origin.
@@ -253,9 +250,18 @@ impl Sampler {
         }
     }
 
-    /// See [`Evidence::nan_policy`].
+    /// What NaN in u, or a NaN parameter, gives: the canonical NaN for warps and BSDFs, a
+    /// dropped sample for polygons and lights.
     pub fn nan_policy(&self) -> NanPolicy {
-        self.evidence().nan_policy()
+        match self.kind() {
+            Kind::Warp(_) | Kind::Bsdf => NanPolicy::NanOut,
+            Kind::Polygon(_) | Kind::Light => NanPolicy::ZeroPdf,
+        }
+    }
+
+    /// True when the scalar parameter is NaN, so that every sample follows the NaN policy.
+    pub fn nan_param(&self) -> bool {
+        matches!(self.evidence().facts().param, Param::Scalar(p, _) if p.is_nan())
     }
 
     /// See [`Evidence::pdf_reads`].
@@ -268,36 +274,56 @@ impl Sampler {
         self.evidence().inverse_reads()
     }
 
-    /// See [`Evidence::is_proper`].
+    /// True when the parameters and geometry are valid, so that every non-NaN u must give a
+    /// sample with a positive, finite pdf: for a BSDF, a parameter that is not NaN; for the
+    /// others, a sample of the square's centre with a positive pdf (the sampler, not the pdf
+    /// function, decides: they disagree at the edges of huge or grazing lights).
     pub fn is_proper(&self) -> bool {
-        self.evidence().is_proper()
+        match self.kind() {
+            Kind::Bsdf => !self.nan_param(),
+            _ => self.sample(Vec2::splat(0.5)).1 > 0.0,
+        }
     }
 
-    /// The same sampler with its parameter replaced by `p`; the samplers without a scalar
-    /// parameter come back unchanged.
+    /// The same sampler with its scalar parameter replaced by `p`; the samplers without one
+    /// come back unchanged.
     pub fn with_param(self, p: f32) -> Self {
-        self.evidence().with_param(p).unwrap_or(self)
+        match self.evidence().facts().param {
+            Param::Scalar(_, with) => with(p),
+            _ => self,
+        }
     }
 
     /// True for a sampler with a scalar parameter.
     pub fn has_param(&self) -> bool {
-        self.evidence().with_param(0.0).is_some()
+        matches!(self.evidence().facts().param, Param::Scalar(..))
     }
 
     /// The same sampler towards other geometry; the samplers without geometry come back
     /// unchanged.
     pub fn with_geometry(self, v: [Vec3; 3]) -> Self {
-        self.evidence().with_geometry(v).unwrap_or(self)
+        match self.evidence().facts().param {
+            Param::Geometry(_, with) => with(v),
+            _ => self,
+        }
     }
 
-    /// See [`Evidence::roundtrip_bound`].
+    /// The round trip of the inverse; `None` exactly for the samplers without one.
+    pub fn roundtrip(&self) -> Option<RoundTrip> {
+        match self.kind() {
+            Kind::Warp(r) | Kind::Polygon(r) => Some(r),
+            Kind::Light | Kind::Bsdf => None,
+        }
+    }
+
+    /// The largest |inverse(sample(u)) − u| per coordinate; `None` without an inverse.
     pub fn roundtrip_bound(&self) -> Option<[f32; 2]> {
-        self.evidence().roundtrip_bound()
+        self.roundtrip().map(|r| r.bound)
     }
 
-    /// See [`Evidence::u1_periodic`].
+    /// True where u₁ is an azimuth, periodic with period 1.
     pub fn u1_periodic(&self) -> bool {
-        self.evidence().u1_periodic()
+        self.roundtrip().is_some_and(|r| r.u1_periodic)
     }
 
     /// See [`Evidence::determined`].
@@ -306,7 +332,7 @@ impl Sampler {
     }
 
     /// Mitsuba's χ² test of `samples` samples from the sequence `u` against this sampler's pdf,
-    /// on the domain that suits it ([`Evidence::chi_square`]).
+    /// on its [`TestDomain`].
     pub fn chi_square(&self, samples: usize, u: impl Fn(usize) -> Vec2) -> ChiSquareResult {
         self.chi_square_against(self, samples, u)
     }
@@ -320,8 +346,27 @@ impl Sampler {
         samples: usize,
         u: impl Fn(usize) -> Vec2,
     ) -> ChiSquareResult {
-        self.evidence()
-            .chi_square(samples, &|i| self.sample(u(i)).0, &|x: Vec3| judge.pdf(x))
+        let sample = |i| self.sample(u(i)).0;
+        let pdf = |x: Vec3| judge.pdf(x) as f64;
+        match self.evidence().facts().test {
+            TestDomain::Disk => ChiSquare::disk().samples(samples).run(
+                |i| sample(i).truncate(),
+                |p: DVec2| pdf(p.extend(0.0).as_vec3()),
+            ),
+            TestDomain::Cap(cap) => cap.test(
+                ChiSquare::sphere().samples(samples).ires(6),
+                sample,
+                |w: DVec3| pdf(w.as_vec3()),
+            ),
+            TestDomain::Square { to, from, jacobian } => ChiSquare::square()
+                .samples(samples)
+                .run(|i| to(sample(i).as_dvec3()), |st| jacobian * pdf(from(st))),
+            TestDomain::Light(light) => {
+                light.test(ChiSquare::square().samples(samples), sample, |w: DVec3| {
+                    pdf(w.as_vec3())
+                })
+            }
+        }
     }
 
     /// Checks the documented bad-input policy on one u, any value at all (the special-value sweep
@@ -339,28 +384,29 @@ impl Sampler {
     /// The spherical polygons are exempt from the pdf-function and inverse checks at their
     /// vertices and edges, where those functions do not yet agree with the sampler.
     pub fn check_sample(&self, u: Vec2) -> Result<(), String> {
-        let (s, e) = (*self, self.evidence());
+        let s = *self;
         let (x, pdf) = s.sample(u);
         let ctx = || format!("{} {s:?}: u = {u:?} → x = {x:?}, pdf = {pdf:e}", s.name());
         if !(pdf.is_finite() && pdf >= 0.0) {
             return Err(format!("pdf not finite and ≥ 0: {}", ctx()));
         }
-        let kind = e.kind();
+        let kind = s.kind();
         // A light's dropped sample (pdf 0) sits at +z, which may be on the light.
         let dropped_light = kind == Kind::Light && pdf == 0.0;
-        if kind != Kind::Polygon && !dropped_light && pdf.to_bits() != s.pdf(x).to_bits() {
+        let polygon = matches!(kind, Kind::Polygon(_));
+        if !polygon && !dropped_light && pdf.to_bits() != s.pdf(x).to_bits() {
             return Err(format!("returned pdf ≠ pdf(x) = {:e}: {}", s.pdf(x), ctx()));
         }
-        let dropped = |pdf: f32| pdf == 0.0 && (x.is_finite() || e.is_corner(x));
-        if u.is_nan() || e.nan_param() {
-            let ok = match e.nan_policy() {
+        let dropped = |pdf: f32| pdf == 0.0 && (x.is_finite() || s.evidence().is_corner(x));
+        if u.is_nan() || s.nan_param() {
+            let ok = match s.nan_policy() {
                 NanPolicy::NanOut => s.is_canonical_nan(x) && pdf == 0.0,
                 NanPolicy::ZeroPdf => dropped(pdf),
             };
             if !ok {
-                return Err(format!("NaN in: not {:?}: {}", e.nan_policy(), ctx()));
+                return Err(format!("NaN in: not {:?}: {}", s.nan_policy(), ctx()));
             }
-        } else if matches!(kind, Kind::Polygon | Kind::Light) {
+        } else if polygon || kind == Kind::Light {
             // A light either gives a sample on it with a positive pdf or drops it (pdf 0, as
             // for degenerate geometry, or where the area pdf would overflow) at a finite point.
             if !((pdf > 0.0 && s.in_domain(x)) || dropped(pdf)) {
@@ -369,7 +415,7 @@ impl Sampler {
                     ctx()
                 ));
             }
-        } else if e.is_proper() {
+        } else if s.is_proper() {
             if !s.in_domain(x) {
                 return Err(format!(
                     "clamped u gives a point outside the domain: {}",

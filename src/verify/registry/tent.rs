@@ -1,46 +1,25 @@
-//! The pair of tents, tested on the square [−1, 1]² mapped onto the unit square.
+//! The pair of tents, tested on [−1, 1]² mapped onto the unit square. It is planar: its point is
+//! (x, y, 0), and the pdf and the inverse read (x, y).
 
-use glam::{DVec2, Vec3};
+use glam::DVec2;
 
-use super::{Evidence, Kind, NanPolicy, Sampler};
-use crate::verify::{ChiSquare, ChiSquareResult};
+use super::{Evidence, Facts, Kind, Param, RoundTrip, TestDomain};
 use crate::warp::TentPair;
 
 impl Evidence for TentPair {
-    fn kind(&self) -> Kind {
-        Kind::Warp
-    }
-    fn nan_policy(&self) -> NanPolicy {
-        NanPolicy::NanOut
-    }
-    fn nan_param(&self) -> bool {
-        false
-    }
-    fn is_proper(&self) -> bool {
-        true
-    }
-    fn with_param(&self, _: f32) -> Option<Sampler> {
-        None
-    }
-    fn with_geometry(&self, _: [Vec3; 3]) -> Option<Sampler> {
-        None
-    }
-    fn roundtrip_bound(&self) -> Option<[f32; 2]> {
-        Some([1.2e-7, 1.2e-7])
-    }
-    fn chi_square(
-        &self,
-        samples: usize,
-        sample: &dyn Fn(usize) -> Vec3,
-        pdf: &dyn Fn(Vec3) -> f32,
-    ) -> ChiSquareResult {
-        ChiSquare::square().samples(samples).run(
-            |i| {
-                let x = sample(i).as_dvec3();
-                DVec2::new((x.x + 1.0) / 2.0, (x.y + 1.0) / 2.0)
+    fn facts(&self) -> Facts {
+        Facts {
+            kind: Kind::Warp(RoundTrip {
+                bound: [1.2e-7, 1.2e-7],
+                u1_periodic: false,
+            }),
+            param: Param::None,
+            test: TestDomain::Square {
+                to: |x| DVec2::new((x.x + 1.0) / 2.0, (x.y + 1.0) / 2.0),
+                from: |p| (2.0 * p - 1.0).as_vec2().extend(0.0),
+                jacobian: 4.0,
             },
-            |p: DVec2| 4.0 * pdf((2.0 * p - 1.0).as_vec2().extend(0.0)) as f64,
-        )
+        }
     }
     fn pdf_reads(&self) -> &'static [usize] {
         &[0, 1]

@@ -85,7 +85,7 @@ fn samplers() -> Vec<Sampler> {
     let mut all = registry::registry();
     // The warps' parameters: the lights' and BSDFs' are fuzzed (`fuzz/fuzz_targets/warps.rs`).
     for s in registry::registry() {
-        if s.kind() == Kind::Warp && s.has_param() {
+        if matches!(s.kind(), Kind::Warp(_)) && s.has_param() {
             all.extend(SPECIAL_PARAMS.iter().map(|&p| s.with_param(p)));
         }
     }

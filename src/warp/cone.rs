@@ -12,7 +12,7 @@ use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::warp::Family;
 use crate::warp::common::{azimuth_fraction, clamp_u, one_minus_z, sin_from_one_minus_cos};
-use crate::warp::family::{is_unit, lane};
+use crate::warp::family::{is_unit, lane, with_pdf};
 
 /// The largest meaningful h: the whole sphere.
 const H_MAX: f64 = 2.0;
@@ -96,11 +96,7 @@ impl Family for UniformCone {
     }
     fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
         let h = lane(self.h);
-        #[inline(always)]
-        move |u| {
-            let w = uniform_cone(u, h);
-            (w, uniform_cone_pdf(w, h))
-        }
+        with_pdf(move |u| uniform_cone(u, h), move |w| uniform_cone_pdf(w, h))
     }
     fn pdf<L: Math>(&self, x: V3<L>) -> L {
         uniform_cone_pdf(x, lane(self.h))

@@ -46,6 +46,19 @@ pub trait Family: Copy + fmt::Debug + PartialEq {
     }
 }
 
+/// The map u ↦ (x, pdf(x)) of a warp whose returned pdf is its pdf function at the sample.
+#[inline(always)]
+pub(crate) fn with_pdf<L: Math>(
+    warp: impl Fn(V2<L>) -> V3<L> + Copy,
+    pdf: impl Fn(V3<L>) -> L + Copy,
+) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
+    #[inline(always)]
+    move |u| {
+        let x = warp(u);
+        (x, pdf(x))
+    }
+}
+
 /// An f32 parameter as a lane value.
 #[inline(always)]
 pub(crate) fn lane<L: Math>(x: f32) -> L {

@@ -11,6 +11,7 @@ use crate::warp::Family;
 use crate::warp::common::{azimuth_fraction, clamp_u, clamp01};
 use crate::warp::disk::{concentric_disk_inverse, concentric_with_one_minus_r};
 use crate::warp::family::is_unit;
+use crate::warp::family::with_pdf;
 
 /// Square → upper hemisphere (+z), uniform in solid angle (pdf 1/(2π) per steradian,
 /// [`uniform_hemisphere_pdf`]).
@@ -93,11 +94,7 @@ impl Family for UniformHemisphere {
         f.write_str("uniform_hemisphere")
     }
     fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
-        #[inline(always)]
-        |u| {
-            let w = uniform_hemisphere(u);
-            (w, uniform_hemisphere_pdf(w))
-        }
+        with_pdf(uniform_hemisphere, uniform_hemisphere_pdf)
     }
     fn pdf<L: Math>(&self, x: V3<L>) -> L {
         uniform_hemisphere_pdf(x)
@@ -115,11 +112,7 @@ impl Family for CosineHemisphere {
         f.write_str("cosine_hemisphere")
     }
     fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
-        #[inline(always)]
-        |u| {
-            let w = cosine_hemisphere(u);
-            (w, cosine_hemisphere_pdf(w))
-        }
+        with_pdf(cosine_hemisphere, cosine_hemisphere_pdf)
     }
     fn pdf<L: Math>(&self, x: V3<L>) -> L {
         cosine_hemisphere_pdf(x)

@@ -9,7 +9,7 @@ use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::warp::Family;
 use crate::warp::common::{azimuth_fraction, clamp_u, one_minus_z, sin_from_one_minus_cos};
-use crate::warp::family::{is_unit, lane};
+use crate::warp::family::{is_unit, lane, with_pdf};
 
 /// Exponents are clamped to [0, `PHONG_N_MAX`]. A lobe sharper than this is a mirror: route it
 /// with a specular flag, not through a pdf of 10¹⁹.
@@ -88,11 +88,7 @@ impl Family for PhongLobe {
     }
     fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
         let n = lane(self.n);
-        #[inline(always)]
-        move |u| {
-            let w = phong_lobe(u, n);
-            (w, phong_lobe_pdf(w, n))
-        }
+        with_pdf(move |u| phong_lobe(u, n), move |w| phong_lobe_pdf(w, n))
     }
     fn pdf<L: Math>(&self, x: V3<L>) -> L {
         phong_lobe_pdf(x, lane(self.n))

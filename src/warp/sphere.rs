@@ -10,6 +10,7 @@ use crate::point::{Point2, Point3};
 use crate::warp::Family;
 use crate::warp::common::{azimuth_fraction, clamp_u, one_minus_z};
 use crate::warp::family::is_unit;
+use crate::warp::family::with_pdf;
 
 /// Square → unit sphere, uniform (pdf 1/(4π) per steradian, [`uniform_sphere_pdf`]).
 ///
@@ -52,11 +53,7 @@ impl Family for UniformSphere {
         f.write_str("uniform_sphere")
     }
     fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
-        #[inline(always)]
-        |u| {
-            let w = uniform_sphere(u);
-            (w, uniform_sphere_pdf(w))
-        }
+        with_pdf(uniform_sphere, uniform_sphere_pdf)
     }
     fn pdf<L: Math>(&self, x: V3<L>) -> L {
         uniform_sphere_pdf(x)

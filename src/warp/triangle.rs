@@ -9,6 +9,7 @@ use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::warp::Family;
 use crate::warp::common::clamp_u;
+use crate::warp::family::with_pdf;
 
 /// Square → barycentrics (b₀, b₁, b₂) of a uniform point in a triangle, by Heitz's
 /// low-distortion map (2019), with density [`uniform_triangle_pdf`].
@@ -71,11 +72,7 @@ impl Family for UniformTriangle {
         f.write_str("uniform_triangle")
     }
     fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
-        #[inline(always)]
-        |u| {
-            let b = uniform_triangle(u);
-            (b, uniform_triangle_pdf(b))
-        }
+        with_pdf(uniform_triangle, uniform_triangle_pdf)
     }
     fn pdf<L: Math>(&self, x: V3<L>) -> L {
         uniform_triangle_pdf(x)

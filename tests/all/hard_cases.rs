@@ -127,7 +127,7 @@ fn warp_case(s: Sampler) -> Warp {
         s: Box::new(move |u| flat(s.sample(u))),
         lanes: Box::new(move |us| check_lanes(us, |u: Vec2x8| s.sample(u), |u: Vec2| s.sample(u))),
         domain: domain(s),
-        nan_coords: s.evidence().nan_coords(),
+        nan_coords: s.nan_coords(),
         fixed: match s {
             Sampler::SphericalTriangle(_) => Some(Vec3::Z),
             Sampler::SphericalRectangle(r) => Some(r.v[0]),

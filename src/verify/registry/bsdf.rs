@@ -1,29 +1,28 @@
-//! The BSDFs, tested on the sphere of directions: Lambert's hemisphere (cos θ decides its pdf),
-//! the whole sphere for a Phong BSDF with a diffuse part, and for a pure sharp Phong lobe the
-//! cap about the mirror direction outside which cosⁿα is below e⁻¹⁵ (1 − cos α > 15/n). The
-//! Phong BSDF's parameter is its exponent.
+//! The BSDFs, tested on the sphere of directions.
 
 use glam::DVec3;
-
 use std::boxed::Box;
 
-use super::{Evidence, Facts, Kind, Param, TestDomain};
+use super::{Evidence, Facts, Kind, Param, Reads};
 use crate::registry::{BsdfLambert, BsdfPhong};
 use crate::verify::Cap;
 
+/// Tested on the hemisphere; cos θ decides the pdf.
 impl Evidence for BsdfLambert {
     fn facts(&self) -> Facts {
-        Facts {
-            kind: Kind::Bsdf,
-            param: Param::None,
-            test: TestDomain::Cap(Cap::z(1.0)),
-        }
+        Facts::new(Kind::Bsdf, Param::None, Cap::z(1.0))
     }
-    fn pdf_reads(&self) -> &'static [usize] {
-        &[2]
+    fn reads(&self) -> Reads {
+        Reads {
+            pdf: &[2],
+            ..Reads::ALL
+        }
     }
 }
 
+/// The exponent varies. Tested on the whole sphere with a diffuse part, and for a pure sharp
+/// lobe on the cap about the mirror direction outside which cosⁿα is below e⁻¹⁵
+/// (1 − cos α > 15/n).
 impl Evidence for BsdfPhong {
     fn facts(&self) -> Facts {
         let s = *self;
@@ -33,10 +32,7 @@ impl Evidence for BsdfPhong {
         } else {
             Cap::z(2.0)
         };
-        Facts {
-            kind: Kind::Bsdf,
-            param: Param::Scalar(s.n, Box::new(move |n| BsdfPhong { n, ..s }.into())),
-            test: TestDomain::Cap(cap),
-        }
+        let n = Param::Scalar(s.n, Box::new(move |n| BsdfPhong { n, ..s }.into()));
+        Facts::new(Kind::Bsdf, n, cap)
     }
 }

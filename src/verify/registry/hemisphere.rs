@@ -2,21 +2,14 @@
 
 use glam::{Vec2, Vec3};
 
-use super::{Evidence, Facts, Kind, Param, RoundTrip, TestDomain};
+use super::{Evidence, Facts, Param, Reads, RoundTrip};
 use crate::verify::Cap;
 use crate::warp::{CosineHemisphere, UniformHemisphere};
 
 /// u₁ is the azimuth: periodic, and undetermined at the pole u₀ = 1.
 impl Evidence for UniformHemisphere {
     fn facts(&self) -> Facts {
-        Facts {
-            kind: Kind::Warp(RoundTrip {
-                bound: [3e-7, 3e-7],
-                u1_periodic: true,
-            }),
-            param: Param::None,
-            test: TestDomain::Cap(Cap::z(1.0)),
-        }
+        Facts::warp(RoundTrip::azimuth([3e-7; 2]), Param::None, Cap::z(1.0))
     }
     fn determined(&self, u: Vec2, _: Vec3) -> [bool; 2] {
         [true, u.x < 1.0 - 1e-6]
@@ -26,19 +19,14 @@ impl Evidence for UniformHemisphere {
 /// cos θ decides the pdf; the inverse is the concentric disk's of (x, y).
 impl Evidence for CosineHemisphere {
     fn facts(&self) -> Facts {
-        Facts {
-            kind: Kind::Warp(RoundTrip {
-                bound: [5e-7, 5e-7],
-                u1_periodic: false,
-            }),
-            param: Param::None,
-            test: TestDomain::Cap(Cap::z(1.0)),
+        Facts::warp(RoundTrip::plain([5e-7; 2]), Param::None, Cap::z(1.0))
+    }
+    fn reads(&self) -> Reads {
+        let inverse = &[0, 1];
+        Reads {
+            pdf: &[2],
+            inverse,
+            nan: 3,
         }
-    }
-    fn pdf_reads(&self) -> &'static [usize] {
-        &[2]
-    }
-    fn inverse_reads(&self) -> &'static [usize] {
-        &[0, 1]
     }
 }

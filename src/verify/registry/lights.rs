@@ -73,10 +73,6 @@ impl Evidence for LightSampler {
                 TestDomain::Light(PlanarLight::parallelogram(v[0], v[1], v[2])),
             ),
         };
-        Facts {
-            kind: Kind::Light,
-            param,
-            test,
-        }
+        Facts::new(Kind::Light, param, test)
     }
 }

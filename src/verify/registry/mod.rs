@@ -77,6 +77,23 @@ pub struct RoundTrip {
     pub u1_periodic: bool,
 }
 
+impl RoundTrip {
+    /// An inverse whose u₁ is an azimuth.
+    pub fn azimuth(bound: [f32; 2]) -> Self {
+        RoundTrip {
+            bound,
+            u1_periodic: true,
+        }
+    }
+    /// An inverse whose u₁ is not periodic.
+    pub fn plain(bound: [f32; 2]) -> Self {
+        RoundTrip {
+            bound,
+            u1_periodic: false,
+        }
+    }
+}
+
 /// The domain of a sampler's χ² test (Mitsuba's method, [`ChiSquare`]).
 #[derive(Clone, Copy, Debug)]
 pub enum TestDomain {
@@ -95,6 +112,18 @@ pub enum TestDomain {
     },
     /// A planar light's own parameter square.
     Light(PlanarLight),
+}
+
+impl From<Cap> for TestDomain {
+    fn from(cap: Cap) -> Self {
+        TestDomain::Cap(cap)
+    }
+}
+
+impl From<PlanarLight> for TestDomain {
+    fn from(light: PlanarLight) -> Self {
+        TestDomain::Light(light)
+    }
 }
 
 /// What the sweep and the fuzz targets vary, with the sampler rebuilt around a new value.
@@ -118,6 +147,46 @@ pub struct Facts {
     pub test: TestDomain,
 }
 
+impl Facts {
+    /// A warp's facts.
+    pub fn warp(roundtrip: RoundTrip, param: Param, test: impl Into<TestDomain>) -> Self {
+        Self::new(Kind::Warp(roundtrip), param, test)
+    }
+    /// The facts of any kind of sampler.
+    pub fn new(kind: Kind, param: Param, test: impl Into<TestDomain>) -> Self {
+        let test = test.into();
+        Facts { kind, param, test }
+    }
+}
+
+/// The coordinates that a sampler's pdf and inverse read, and how many coordinates of its point
+/// NaN in u makes NaN.
+#[derive(Clone, Copy, Debug)]
+pub struct Reads {
+    /// The coordinates of a point that the pdf reads: NaN in one gives pdf 0.
+    pub pdf: &'static [usize],
+    /// The coordinates of a point that the inverse reads: NaN in one gives NaN (for the policy
+    /// [`NanPolicy::NanOut`]).
+    pub inverse: &'static [usize],
+    /// How many output coordinates NaN in u makes the canonical NaN.
+    pub nan: usize,
+}
+
+impl Reads {
+    /// Every coordinate, the strictest claim.
+    pub const ALL: Reads = Reads {
+        pdf: &[0, 1, 2],
+        inverse: &[0, 1, 2],
+        nan: 3,
+    };
+    /// A planar sampler's (x, y), its point padded with z = 0.
+    pub const PLANAR: Reads = Reads {
+        pdf: &[0, 1],
+        inverse: &[0, 1],
+        nan: 2,
+    };
+}
+
 /// The std part of a sampler of the registry: what the evidence checks it against.
 ///
 /// [`facts`](Evidence::facts) states what differs from sampler to sampler. The provided items
@@ -128,19 +197,9 @@ pub trait Evidence {
     /// What it is, what may vary, and the domain of its χ² test.
     fn facts(&self) -> Facts;
 
-    /// The coordinates of a point that the pdf reads: NaN in one gives pdf 0.
-    fn pdf_reads(&self) -> &'static [usize] {
-        &[0, 1, 2]
-    }
-    /// The coordinates of a point that the inverse reads: NaN in one gives NaN (for the policy
-    /// [`NanPolicy::NanOut`]).
-    fn inverse_reads(&self) -> &'static [usize] {
-        &[0, 1, 2]
-    }
-    /// How many output coordinates NaN in u makes the canonical NaN (the planar samplers pad
-    /// their point with z = 0).
-    fn nan_coords(&self) -> usize {
-        3
+    /// The coordinates that the pdf and the inverse read, and those NaN in u makes NaN.
+    fn reads(&self) -> Reads {
+        Reads::ALL
     }
     /// True when `x` is the documented point of a dropped sample that may be non-finite (a
     /// degenerate rectangle's corner).
@@ -264,14 +323,19 @@ impl Sampler {
         matches!(self.evidence().facts().param, Param::Scalar(p, _) if p.is_nan())
     }
 
-    /// See [`Evidence::pdf_reads`].
+    /// The coordinates of a point that the pdf reads ([`Evidence::reads`]).
     pub fn pdf_reads(&self) -> &'static [usize] {
-        self.evidence().pdf_reads()
+        self.evidence().reads().pdf
     }
 
-    /// See [`Evidence::inverse_reads`].
+    /// The coordinates of a point that the inverse reads ([`Evidence::reads`]).
     pub fn inverse_reads(&self) -> &'static [usize] {
-        self.evidence().inverse_reads()
+        self.evidence().reads().inverse
+    }
+
+    /// How many coordinates of its point NaN in u makes NaN ([`Evidence::reads`]).
+    pub fn nan_coords(&self) -> usize {
+        self.evidence().reads().nan
     }
 
     /// True when the parameters and geometry are valid, so that every non-NaN u must give a
@@ -461,7 +525,7 @@ impl Sampler {
 
     /// Every coordinate the sampler returns is the canonical NaN.
     fn is_canonical_nan(&self, v: Vec3) -> bool {
-        let k = self.evidence().nan_coords();
+        let k = self.nan_coords();
         v.to_array()[..k].iter().all(|c| c.to_bits() == 0x7fc0_0000)
     }
 }

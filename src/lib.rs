@@ -26,8 +26,8 @@
 //! | 4 | [`reference`](mod@reference) | analytic f64 irradiance references | core and libm only |
 //! | 5 | [`scene`] | sphere, disk, triangle and rectangle lights, light selection, Lambert and modified Phong BSDFs | lane, math, point, frame, warp |
 //! | 6 | [`direct`] | the direct-lighting estimator and its strategies | every floor below |
-//! | 6 | [`registry`] | every sampler once ([`Family`](warp::Family): name, sample, pdf, inverse, domain), the warps' families, the lights' and the BSDFs' | warp, scene and the floors below |
-//! | — | [`verify`] | (std) χ² goodness of fit, the packet-vs-scalar lane check, the sampler registry and the direct-lighting test scenes | anything below |
+//! | 6 | [`registry`] | every sampler once, in one list: the warps' families, the lights' and the BSDFs' ([`Family`](warp::Family): name, sample, pdf, inverse, domain), without std, for the evidence and the firmware | warp, scene and the floors below |
+//! | — | [`verify`] | (std) χ² goodness of fit, the packet-vs-scalar lane check, the registry's evidence (one file per family) and the direct-lighting test scenes | anything below |
 //!
 //! # One source, every width
 //!

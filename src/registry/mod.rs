@@ -8,7 +8,8 @@
 //! `verify::registry::Evidence`): the warps' families live next to their math in
 //! [`warp`], the lights' and the BSDFs' here ([`LightSampler`], [`BsdfLambert`],
 //! [`BsdfPhong`]), since they sit above the scene. Adding a sampler is its family and one line
-//! of [`families!`]: the variant of [`Sampler`], its family type and its registered instances.
+//! of the list below (`families!`): the variant of [`Sampler`], its family type and its
+//! registered instances.
 //!
 //! Every method is generic over the width, like the warps themselves: `sample(Vec2)`,
 //! `sample(Vec2x8)` and `sample(DVec2)` run the same code.

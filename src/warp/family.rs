@@ -75,36 +75,3 @@ pub(crate) fn lanes3<L: Math>(p: Vec3) -> V3<L> {
 pub(crate) fn is_unit(x: Vec3) -> bool {
     x.is_finite() && (x.as_dvec3().length() - 1.0).abs() <= 1e-6
 }
-
-/// How a spherical polygon is sampled, from `pdf`, its sample's pdf at u = (½, ½), and the
-/// solid angle below which it is sampled by area: "area" below that threshold (or degenerate),
-/// "small" up to 0.5 sr, "large" above.
-pub fn polygon_size(pdf: f32, min_sr: f32) -> &'static str {
-    let omega = 1.0 / pdf as f64;
-    if omega.is_nan() || omega < min_sr as f64 {
-        "area"
-    } else if omega > 0.5 {
-        "large"
-    } else {
-        "small"
-    }
-}
-
-/// True when `x` lies on the parallelogram corner + s·ex + t·ey (`v` = corner, ex, ey), within
-/// 1e-5 of the light's size and distance, in the plane and across it: an f32 point far from the
-/// origin is rounded on the scale of its distance, not of the light.
-pub(crate) fn on_parallelogram(x: Vec3, v: [Vec3; 3]) -> bool {
-    let d = x.as_dvec3() - v[0].as_dvec3();
-    let (ex, ey) = (v[1].as_dvec3(), v[2].as_dvec3());
-    // (s, t) from the 2×2 Gram system, so that edges only nearly orthogonal (as rounding leaves
-    // them) do not leak one coordinate into the other.
-    let (xx, xy, yy) = (ex.dot(ex), ex.dot(ey), ey.dot(ey));
-    let (dx, dy) = (d.dot(ex), d.dot(ey));
-    let det = xx * yy - xy * xy;
-    let s = (dx * yy - dy * xy) / det;
-    let t = (dy * xx - dx * xy) / det;
-    let off = (d - ex * s - ey * t).length();
-    let tol = 1e-5 * (ex.length() + ey.length() + v[0].as_dvec3().length());
-    let (ms, mt) = (tol / ex.length(), tol / ey.length());
-    x.is_finite() && (-ms..=1.0 + ms).contains(&s) && (-mt..=1.0 + mt).contains(&t) && off <= tol
-}

@@ -51,6 +51,7 @@ pub(crate) mod family;
 mod hemisphere;
 mod phong;
 mod polygon;
+mod solid_angle;
 mod sphere;
 mod spherical_rectangle;
 mod spherical_triangle;
@@ -66,7 +67,7 @@ pub use disk::{
     ConcentricDisk, PolarDisk, concentric_disk, concentric_disk_inverse, polar_disk,
     polar_disk_inverse, uniform_disk_pdf,
 };
-pub use family::{Family, polygon_size};
+pub use family::Family;
 pub use hemisphere::{
     CosineHemisphere, UniformHemisphere, cosine_hemisphere, cosine_hemisphere_inverse,
     cosine_hemisphere_pdf, uniform_hemisphere, uniform_hemisphere_inverse, uniform_hemisphere_pdf,
@@ -74,15 +75,16 @@ pub use hemisphere::{
 pub(crate) use phong::phong_lobe_density;
 pub use phong::{PHONG_N_MAX, PhongLobe, phong_lobe, phong_lobe_inverse, phong_lobe_pdf};
 pub(crate) use polygon::{dot_wide, plane_dot, wide_cross};
+pub use solid_angle::{SolidAngleRectangle, SolidAngleTriangle, polygon_size};
 pub use sphere::{UniformSphere, uniform_sphere, uniform_sphere_inverse, uniform_sphere_pdf};
 pub use spherical_rectangle::{
     SPHERICAL_RECTANGLE_INVERSE_REACH, SPHERICAL_RECTANGLE_MAX_SR, SPHERICAL_RECTANGLE_MIN_SR,
-    SolidAngleRectangle, SphericalRectangle, spherical_rectangle, spherical_rectangle_inverse,
-    spherical_rectangle_pdf, urena_rectangle,
+    SphericalRectangle, spherical_rectangle, spherical_rectangle_inverse, spherical_rectangle_pdf,
+    urena_rectangle,
 };
 pub use spherical_triangle::{
-    SPHERICAL_TRIANGLE_MAX_SR, SPHERICAL_TRIANGLE_MIN_SR, SolidAngleTriangle, SphericalTriangle,
-    arvo_triangle, spherical_triangle, spherical_triangle_inverse, spherical_triangle_pdf,
+    SPHERICAL_TRIANGLE_MAX_SR, SPHERICAL_TRIANGLE_MIN_SR, SphericalTriangle, arvo_triangle,
+    spherical_triangle, spherical_triangle_inverse, spherical_triangle_pdf,
 };
 pub use tent::{TentPair, tent, tent_inverse, tent_pdf};
 pub use triangle::{

@@ -52,18 +52,12 @@
 //! at most 5.7e-7 on 2.4e5 random rectangles from 2π down to 1e-9 sr
 //! (`tests/all/warp/rectangle_accuracy.rs`).
 
-use core::fmt;
-use core::hint::black_box;
 use core::marker::PhantomData;
-
-use glam::Vec3;
 
 use crate::lane::{Lane, Mask, V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
-use crate::warp::Family;
 use crate::warp::common::clamp_u;
-use crate::warp::family::{lanes3, on_parallelogram, polygon_size};
 use crate::warp::polygon::{area_pdf_solid_angle, pow2_scale};
 use crate::warp::polygon::{cross_wide, dot_wide, plane_dot};
 
@@ -838,48 +832,4 @@ pub fn spherical_rectangle_inverse<P: Point3<Lane = L>, L: Math>(
     ey: P,
 ) -> P::Vec2 {
     SphericalRectangle::new(corner, ex, ey).inverse(p)
-}
-
-/// The registry's [`spherical_rectangle`] towards corner + s·ex + t·ey: `v` is corner, ex, ey.
-/// Its sample is the point on the light.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SolidAngleRectangle {
-    /// Corner, ex, ey.
-    pub v: [Vec3; 3],
-}
-
-impl SolidAngleRectangle {
-    /// How it is sampled, by the solid angle of its sample at u = (½, ½): see [`polygon_size`].
-    pub fn size(&self) -> &'static str {
-        polygon_size(
-            self.sampler::<f32>()(V2::new(0.5, 0.5)).1,
-            SPHERICAL_RECTANGLE_MIN_SR,
-        )
-    }
-}
-
-impl Family for SolidAngleRectangle {
-    fn name(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "spherical_rectangle {}", self.size())
-    }
-    fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
-        let v = self.v.map(lanes3::<L>);
-        // Through `black_box`, as for the triangle: the set-up is paid at every sample.
-        #[inline(always)]
-        move |u| {
-            let [c, ex, ey] = black_box(v);
-            spherical_rectangle(u, c, ex, ey)
-        }
-    }
-    fn pdf<L: Math>(&self, x: V3<L>) -> L {
-        let [c, ex, ey] = self.v.map(lanes3::<L>);
-        spherical_rectangle_pdf(x.normalize(), c, ex, ey)
-    }
-    fn inverse<L: Math>(&self, x: V3<L>) -> Option<V2<L>> {
-        let [c, ex, ey] = self.v.map(lanes3::<L>);
-        Some(spherical_rectangle_inverse(x, c, ex, ey))
-    }
-    fn in_domain(&self, x: Vec3) -> bool {
-        on_parallelogram(x, self.v)
-    }
 }

@@ -4,18 +4,12 @@
 //! Vertices are given relative to the shading point, in any winding. The solid angle Ω comes from
 //! Van Oosterom–Strackee on edge vectors, and the same Ω serves the sample and the pdf.
 
-use core::fmt;
-use core::hint::black_box;
 use core::marker::PhantomData;
-
-use glam::Vec3;
 
 use crate::lane::{Mask, V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
-use crate::warp::Family;
 use crate::warp::common::clamp_u;
-use crate::warp::family::{is_unit, lanes3, polygon_size};
 use crate::warp::polygon::{
     EdgePlanes, area_pdf_from_cos, needs_pow2_scale, pow2_scale, vos_solid_angle,
 };
@@ -525,48 +519,4 @@ pub fn spherical_triangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P, c:
 #[inline]
 pub fn spherical_triangle_inverse<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P, c: P) -> P::Vec2 {
     SphericalTriangle::new(a, b, c).inverse(w)
-}
-
-/// The registry's [`spherical_triangle`] towards vertices `v` (relative to the shading point).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SolidAngleTriangle {
-    /// The vertices.
-    pub v: [Vec3; 3],
-}
-
-impl SolidAngleTriangle {
-    /// How it is sampled, by the solid angle of its sample at u = (½, ½): see [`polygon_size`].
-    pub fn size(&self) -> &'static str {
-        polygon_size(
-            self.sampler::<f32>()(V2::new(0.5, 0.5)).1,
-            SPHERICAL_TRIANGLE_MIN_SR,
-        )
-    }
-}
-
-impl Family for SolidAngleTriangle {
-    fn name(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "spherical_triangle {}", self.size())
-    }
-    fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
-        let v = self.v.map(lanes3::<L>);
-        // The geometry passes through `black_box` so that a loop over a batch pays the set-up
-        // at every sample, as a renderer does when each sample has its own shading point.
-        #[inline(always)]
-        move |u| {
-            let [a, b, c] = black_box(v);
-            spherical_triangle(u, a, b, c)
-        }
-    }
-    fn pdf<L: Math>(&self, x: V3<L>) -> L {
-        let [a, b, c] = self.v.map(lanes3::<L>);
-        spherical_triangle_pdf(x, a, b, c)
-    }
-    fn inverse<L: Math>(&self, x: V3<L>) -> Option<V2<L>> {
-        let [a, b, c] = self.v.map(lanes3::<L>);
-        Some(spherical_triangle_inverse(x, a, b, c))
-    }
-    fn in_domain(&self, x: Vec3) -> bool {
-        is_unit(x)
-    }
 }

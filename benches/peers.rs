@@ -27,7 +27,9 @@ use criterion::{
 use glam::{Vec2, Vec3};
 use mcsample::rng::Pcg32x8;
 use mcsample::verify::registry::{self, Sampler};
-use mcsample::warp::{SphericalRectangle, SphericalTriangle};
+use mcsample::warp::{
+    SolidAngleRectangle, SolidAngleTriangle, SphericalRectangle, SphericalTriangle, UniformCone,
+};
 use mcsample::x8::{Vec2x8, Vec3x8};
 use plain::{U8, V8};
 use rand_core::Rng;
@@ -52,12 +54,12 @@ fn points() -> (Vec<Vec2>, Vec<Vec2x8>, Vec<U8>) {
 /// The plain packet version of a sampler, where one exists.
 fn plain_x8(s: Sampler) -> Option<fn(U8, f32) -> V8> {
     Some(match s {
-        Sampler::ConcentricDisk => |u, _| plain::concentric_disk_x8(u),
-        Sampler::PolarDisk => |u, _| plain::polar_disk_x8(u),
-        Sampler::UniformHemisphere => |u, _| plain::uniform_hemisphere_x8(u),
-        Sampler::CosineHemisphere => |u, _| plain::cosine_hemisphere_x8(u),
-        Sampler::UniformSphere => |u, _| plain::uniform_sphere_x8(u),
-        Sampler::UniformCone { .. } => |u, h| plain::uniform_cone_x8(u, f32x8::splat(h)),
+        Sampler::ConcentricDisk(_) => |u, _| plain::concentric_disk_x8(u),
+        Sampler::PolarDisk(_) => |u, _| plain::polar_disk_x8(u),
+        Sampler::UniformHemisphere(_) => |u, _| plain::uniform_hemisphere_x8(u),
+        Sampler::CosineHemisphere(_) => |u, _| plain::cosine_hemisphere_x8(u),
+        Sampler::UniformSphere(_) => |u, _| plain::uniform_sphere_x8(u),
+        Sampler::UniformCone(_) => |u, h| plain::uniform_cone_x8(u, f32x8::splat(h)),
         _ => return None,
     })
 }
@@ -92,11 +94,11 @@ fn warps(c: &mut Criterion) {
         // The polygons once more, set up once for all the points (`new`, then `sample`): a
         // caller's loop drawing many samples at one shading point.
         match s {
-            Sampler::SphericalTriangle { v: [a, b, c] } => {
+            Sampler::SphericalTriangle(SolidAngleTriangle { v: [a, b, c] }) => {
                 let t = SphericalTriangle::new(a, b, c);
                 prepared(&mut g, &mut out, &pts, t, |t, u| t.sample(u).0);
             }
-            Sampler::SphericalRectangle { v: [c0, ex, ey] } => {
+            Sampler::SphericalRectangle(SolidAngleRectangle { v: [c0, ex, ey] }) => {
                 let r = SphericalRectangle::new(c0, ex, ey);
                 prepared(&mut g, &mut out, &pts, r, |r, u| r.sample(u).0);
             }
@@ -112,7 +114,7 @@ fn warps(c: &mut Criterion) {
         }
         if let Some(f) = plain_x8(s) {
             let h = match s {
-                Sampler::UniformCone { h } => h,
+                Sampler::UniformCone(UniformCone { h }) => h,
                 _ => 0.0,
             };
             g.bench_function("plain wide", |b| {

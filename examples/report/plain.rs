@@ -13,6 +13,7 @@ use std::hint::black_box;
 
 use glam::{Vec2, Vec3};
 use mcsample::verify::registry::Sampler;
+use mcsample::warp::{PhongLobe, SolidAngleRectangle, SolidAngleTriangle, UniformCone};
 use wide::f32x8;
 
 /// Shirley–Chiu concentric map, as in pbrt.
@@ -192,20 +193,20 @@ pub fn loop_for(s: Sampler) -> Option<PlainLoop> {
         })
     }
     Some(match s {
-        Sampler::ConcentricDisk => each(|u| concentric_disk(u).extend(0.0)),
-        Sampler::PolarDisk => each(|u| polar_disk(u).extend(0.0)),
-        Sampler::UniformHemisphere => each(uniform_hemisphere),
-        Sampler::CosineHemisphere => each(cosine_hemisphere),
-        Sampler::UniformSphere => each(uniform_sphere),
-        Sampler::UniformCone { h } => each(move |u| uniform_cone(u, h)),
-        Sampler::PhongLobe { n } => each(move |u| phong_lobe(u, n)),
-        Sampler::UniformTriangle => each(uniform_triangle),
-        Sampler::Tent => each(|u| Vec3::new(tent(u.x), tent(u.y), 0.0)),
-        Sampler::SphericalTriangle { v } => each(move |u| {
+        Sampler::ConcentricDisk(_) => each(|u| concentric_disk(u).extend(0.0)),
+        Sampler::PolarDisk(_) => each(|u| polar_disk(u).extend(0.0)),
+        Sampler::UniformHemisphere(_) => each(uniform_hemisphere),
+        Sampler::CosineHemisphere(_) => each(cosine_hemisphere),
+        Sampler::UniformSphere(_) => each(uniform_sphere),
+        Sampler::UniformCone(UniformCone { h }) => each(move |u| uniform_cone(u, h)),
+        Sampler::PhongLobe(PhongLobe { n }) => each(move |u| phong_lobe(u, n)),
+        Sampler::UniformTriangle(_) => each(uniform_triangle),
+        Sampler::Tent(_) => each(|u| Vec3::new(tent(u.x), tent(u.y), 0.0)),
+        Sampler::SphericalTriangle(SolidAngleTriangle { v }) => each(move |u| {
             let [a, b, c] = black_box(v);
             spherical_triangle(u, a, b, c).0
         }),
-        Sampler::SphericalRectangle { v } => each(move |u| {
+        Sampler::SphericalRectangle(SolidAngleRectangle { v }) => each(move |u| {
             let [c, ex, ey] = black_box(v);
             spherical_rectangle(u, c, ex, ey).0
         }),

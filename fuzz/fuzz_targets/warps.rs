@@ -6,7 +6,7 @@
 
 use glam::{Vec2, Vec3};
 use libfuzzer_sys::fuzz_target;
-use mcsample::verify::registry::{self, Sampler};
+use mcsample::verify::registry::{self, LightSampler, Sampler};
 use mcsample::x8::{Vec2x8, Vec3x8};
 
 fn floats(data: &[u8]) -> [f32; 16] {
@@ -37,10 +37,10 @@ fuzz_target!(|data: &[u8]| {
     let point = Vec3::new(f[13], f[14], f[15]);
     for s in registry::registry() {
         // The cone takes f[2] as h, the Phong lobe f[3] as n; the polygons the fuzzed vertices.
-        let param = if matches!(s, Sampler::PhongLobe { .. }) { f[3] } else { f[2] };
+        let param = if matches!(s, Sampler::PhongLobe(_)) { f[3] } else { f[2] };
         // The rectangle's contract asks for orthogonal edges: keep the fuzzed light inside it.
         let geometry = match s {
-            Sampler::SphericalRectangle { .. } | Sampler::LightRectangle { .. } => {
+            Sampler::SphericalRectangle(_) | Sampler::Light(LightSampler::Rectangle { .. }) => {
                 let [c, ex, ey] = geometry;
                 let ey = ey - ex * (ey.dot(ex) / ex.length_squared());
                 // f32 Gram–Schmidt leaves a rounding residue along ex when ey's part along it is

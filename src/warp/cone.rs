@@ -3,10 +3,16 @@
 //! The cone is given by h = 1 − cos θmax, never by cos θmax: near the axis cos θmax rounds to 1
 //! and loses h entirely (cos θmax = 1 − 1e-7 stored in f32 gives an h that is 19 % wrong).
 
+use core::fmt;
+
+use glam::Vec3;
+
 use crate::lane::{V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
+use crate::warp::Family;
 use crate::warp::common::{azimuth_fraction, clamp_u, one_minus_z, sin_from_one_minus_cos};
+use crate::warp::family::{is_unit, lane, with_pdf};
 
 /// The largest meaningful h: the whole sphere.
 const H_MAX: f64 = 2.0;
@@ -75,4 +81,31 @@ pub fn uniform_cone_inverse<P: Point3<Lane = L>, L: Math>(w: P, h: L) -> P::Vec2
     let u0 = (one_minus_z(w) / h).clamp(L::ZERO, L::ONE);
     let u = V2::new(u0, azimuth_fraction(w.x, w.y));
     Point2::from_lanes(u.nan_where(w.any_nan() | h.is_nan()))
+}
+
+/// The registry's [`uniform_cone`] with h = 1 − cos θmax.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct UniformCone {
+    /// 1 − cos θmax.
+    pub h: f32,
+}
+
+impl Family for UniformCone {
+    fn name(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "uniform_cone h={}", self.h)
+    }
+    fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
+        let h = lane(self.h);
+        with_pdf(move |u| uniform_cone(u, h), move |w| uniform_cone_pdf(w, h))
+    }
+    fn pdf<L: Math>(&self, x: V3<L>) -> L {
+        uniform_cone_pdf(x, lane(self.h))
+    }
+    fn inverse<L: Math>(&self, x: V3<L>) -> Option<V2<L>> {
+        Some(uniform_cone_inverse(x, lane(self.h)))
+    }
+    fn in_domain(&self, x: Vec3) -> bool {
+        let h = (self.h as f64).clamp(0.0, H_MAX);
+        is_unit(x) && 1.0 - x.z as f64 <= h * (1.0 + 1e-6) + 1e-7
+    }
 }

@@ -1,9 +1,14 @@
 //! Square → unit disk: Shirley–Chiu's concentric map and the polar map. Both are area-preserving
 //! up to a constant, so the area pdf is 1/π.
 
-use crate::lane::V2;
+use core::fmt;
+
+use glam::Vec3;
+
+use crate::lane::{V2, V3};
 use crate::math::Math;
 use crate::point::Point2;
+use crate::warp::Family;
 use crate::warp::common::{azimuth_fraction, clamp_u};
 
 /// The concentric map, also returning 1 − r for the radius r of the point.
@@ -116,4 +121,71 @@ pub fn uniform_disk_pdf<P: Point2<Lane = L>, L: Math>(p: P) -> L {
         .length_squared()
         .le(L::c(1.0 + 1.0 / 1_048_576.0));
     L::select(inside, L::c(core::f64::consts::FRAC_1_PI), L::ZERO)
+}
+
+/// The registry's [`concentric_disk`]: (x, y, 0) with [`uniform_disk_pdf`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ConcentricDisk;
+
+/// The registry's [`polar_disk`]: (x, y, 0) with [`uniform_disk_pdf`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PolarDisk;
+
+/// The disk pdf of a point widened to (x, y, 0): 0 off the plane.
+#[inline(always)]
+fn disk_pdf<L: Math>(x: V3<L>) -> L {
+    L::select(
+        x.z.eq(L::ZERO),
+        uniform_disk_pdf(V2::new(x.x, x.y)),
+        L::ZERO,
+    )
+}
+
+/// (x, y, 0) with |(x, y)| ≤ 1 up to rounding.
+fn in_disk(x: Vec3) -> bool {
+    x.is_finite() && x.z == 0.0 && x.truncate().as_dvec2().length_squared() <= 1.0 + 1e-6
+}
+
+impl Family for ConcentricDisk {
+    fn name(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("concentric_disk")
+    }
+    fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
+        #[inline(always)]
+        |u| {
+            let p = concentric_disk(u);
+            (V3::new(p.x, p.y, L::ZERO), uniform_disk_pdf(p))
+        }
+    }
+    fn pdf<L: Math>(&self, x: V3<L>) -> L {
+        disk_pdf(x)
+    }
+    fn inverse<L: Math>(&self, x: V3<L>) -> Option<V2<L>> {
+        Some(concentric_disk_inverse(V2::new(x.x, x.y)))
+    }
+    fn in_domain(&self, x: Vec3) -> bool {
+        in_disk(x)
+    }
+}
+
+impl Family for PolarDisk {
+    fn name(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("polar_disk")
+    }
+    fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
+        #[inline(always)]
+        |u| {
+            let p = polar_disk(u);
+            (V3::new(p.x, p.y, L::ZERO), uniform_disk_pdf(p))
+        }
+    }
+    fn pdf<L: Math>(&self, x: V3<L>) -> L {
+        disk_pdf(x)
+    }
+    fn inverse<L: Math>(&self, x: V3<L>) -> Option<V2<L>> {
+        Some(polar_disk_inverse(V2::new(x.x, x.y)))
+    }
+    fn in_domain(&self, x: Vec3) -> bool {
+        in_disk(x)
+    }
 }

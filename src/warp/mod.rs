@@ -47,9 +47,11 @@
 mod common;
 mod cone;
 mod disk;
+pub(crate) mod family;
 mod hemisphere;
 mod phong;
 mod polygon;
+mod solid_angle;
 mod sphere;
 mod spherical_rectangle;
 mod spherical_triangle;
@@ -58,19 +60,23 @@ mod triangle;
 
 pub use common::ONE_MINUS_EPS;
 pub use cone::{
-    cone_h_from_cos, cone_h_from_sin2, uniform_cone, uniform_cone_inverse, uniform_cone_pdf,
+    UniformCone, cone_h_from_cos, cone_h_from_sin2, uniform_cone, uniform_cone_inverse,
+    uniform_cone_pdf,
 };
 pub use disk::{
-    concentric_disk, concentric_disk_inverse, polar_disk, polar_disk_inverse, uniform_disk_pdf,
+    ConcentricDisk, PolarDisk, concentric_disk, concentric_disk_inverse, polar_disk,
+    polar_disk_inverse, uniform_disk_pdf,
 };
+pub use family::Family;
 pub use hemisphere::{
-    cosine_hemisphere, cosine_hemisphere_inverse, cosine_hemisphere_pdf, uniform_hemisphere,
-    uniform_hemisphere_inverse, uniform_hemisphere_pdf,
+    CosineHemisphere, UniformHemisphere, cosine_hemisphere, cosine_hemisphere_inverse,
+    cosine_hemisphere_pdf, uniform_hemisphere, uniform_hemisphere_inverse, uniform_hemisphere_pdf,
 };
 pub(crate) use phong::phong_lobe_density;
-pub use phong::{PHONG_N_MAX, phong_lobe, phong_lobe_inverse, phong_lobe_pdf};
+pub use phong::{PHONG_N_MAX, PhongLobe, phong_lobe, phong_lobe_inverse, phong_lobe_pdf};
 pub(crate) use polygon::{dot_wide, plane_dot, wide_cross};
-pub use sphere::{uniform_sphere, uniform_sphere_inverse, uniform_sphere_pdf};
+pub use solid_angle::{SolidAngleRectangle, SolidAngleTriangle, polygon_size};
+pub use sphere::{UniformSphere, uniform_sphere, uniform_sphere_inverse, uniform_sphere_pdf};
 pub use spherical_rectangle::{
     SPHERICAL_RECTANGLE_INVERSE_REACH, SPHERICAL_RECTANGLE_MAX_SR, SPHERICAL_RECTANGLE_MIN_SR,
     SphericalRectangle, spherical_rectangle, spherical_rectangle_inverse, spherical_rectangle_pdf,
@@ -80,8 +86,7 @@ pub use spherical_triangle::{
     SPHERICAL_TRIANGLE_MAX_SR, SPHERICAL_TRIANGLE_MIN_SR, SphericalTriangle, arvo_triangle,
     spherical_triangle, spherical_triangle_inverse, spherical_triangle_pdf,
 };
-pub use tent::{tent, tent_inverse, tent_pdf};
-// For the registry's pair of tents (see there).
-#[cfg(feature = "std")]
-pub(crate) use tent::tent_uncanonical;
-pub use triangle::{uniform_triangle, uniform_triangle_inverse, uniform_triangle_pdf};
+pub use tent::{TentPair, tent, tent_inverse, tent_pdf};
+pub use triangle::{
+    UniformTriangle, uniform_triangle, uniform_triangle_inverse, uniform_triangle_pdf,
+};

@@ -1,9 +1,15 @@
 //! Square → Phong lobe cosⁿα about +z, pdf (n+1)/(2π)·cosⁿα per steradian.
 
+use core::fmt;
+
+use glam::Vec3;
+
 use crate::lane::{V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
+use crate::warp::Family;
 use crate::warp::common::{azimuth_fraction, clamp_u, one_minus_z, sin_from_one_minus_cos};
+use crate::warp::family::{is_unit, lane, with_pdf};
 
 /// Exponents are clamped to [0, `PHONG_N_MAX`]. A lobe sharper than this is a mirror: route it
 /// with a specular flag, not through a pdf of 10¹⁹.
@@ -67,4 +73,30 @@ pub fn phong_lobe_inverse<P: Point3<Lane = L>, L: Math>(w: P, n: L) -> P::Vec2 {
     let u0 = L::select(w.z.gt(L::ZERO), u0.min(L::ONE), L::ZERO);
     let u = V2::new(u0, azimuth_fraction(w.x, w.y));
     Point2::from_lanes(u.nan_where(w.any_nan() | n.is_nan()))
+}
+
+/// The registry's [`phong_lobe`] with exponent n.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PhongLobe {
+    /// The exponent.
+    pub n: f32,
+}
+
+impl Family for PhongLobe {
+    fn name(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "phong_lobe n={}", self.n)
+    }
+    fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
+        let n = lane(self.n);
+        with_pdf(move |u| phong_lobe(u, n), move |w| phong_lobe_pdf(w, n))
+    }
+    fn pdf<L: Math>(&self, x: V3<L>) -> L {
+        phong_lobe_pdf(x, lane(self.n))
+    }
+    fn inverse<L: Math>(&self, x: V3<L>) -> Option<V2<L>> {
+        Some(phong_lobe_inverse(x, lane(self.n)))
+    }
+    fn in_domain(&self, x: Vec3) -> bool {
+        is_unit(x) && x.z >= 0.0
+    }
 }

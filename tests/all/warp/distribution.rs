@@ -46,7 +46,7 @@ fn samplers() -> Vec<Sampler> {
         Vec3::new(2.8, -1.2, 1.1),
         Vec3::new(0.4, 3.2, -0.1),
     ];
-    all.push(Sampler::SphericalTriangle { v: wide });
+    all.push(warp::SolidAngleTriangle { v: wide }.into());
     all
 }
 
@@ -109,7 +109,7 @@ fn returned_pdf_equals_pdf_function() {
             let rel = ((p - q) / q).abs() as f64;
             worst = worst.max(rel);
             // The rectangle's pdf function recomputes Ω from the direction's frame: 1e-5.
-            let tol = if matches!(s, Sampler::SphericalRectangle { .. }) {
+            let tol = if matches!(s, Sampler::SphericalRectangle(_)) {
                 1e-5
             } else {
                 1e-6
@@ -183,7 +183,8 @@ fn negative_controls_are_rejected() {
 
     // Spherical triangle samples against the pdf of the same triangle with one vertex moved by
     // 2 % of an edge: the pdf level and its support shift slightly.
-    let Sampler::SphericalTriangle { v: [a, b, c] } = polygons()[0] else {
+    let Sampler::SphericalTriangle(warp::SolidAngleTriangle { v: [a, b, c] }) = polygons()[0]
+    else {
         unreachable!()
     };
     let moved = c + (b - a) * 0.02;
@@ -267,8 +268,8 @@ fn every_pdf_integrates_to_one() {
     }
     for s in polygons() {
         let cap = match s {
-            Sampler::SphericalTriangle { v } => Cap::around(&v),
-            Sampler::SphericalRectangle { v: [c, ex, ey] } => {
+            Sampler::SphericalTriangle(warp::SolidAngleTriangle { v }) => Cap::around(&v),
+            Sampler::SphericalRectangle(warp::SolidAngleRectangle { v: [c, ex, ey] }) => {
                 Cap::around(&[c, c + ex, c + ey, c + ex + ey])
             }
             _ => unreachable!(),
@@ -316,17 +317,20 @@ fn every_pdf_integrates_to_one() {
 fn registry_chi_square_rejects_a_sampler_with_the_wrong_pdf() {
     // Negative controls through the same domains and binning as `every_warp_passes_chi_square`: each sampler's
     // samples judged by a pdf that is slightly or grossly wrong.
-    let controls = [
+    let controls: [(Sampler, Sampler); 4] = [
         (
-            Sampler::UniformCone { h: 0.3 },
-            Sampler::UniformCone { h: 0.25 },
+            warp::UniformCone { h: 0.3 }.into(),
+            warp::UniformCone { h: 0.25 }.into(),
         ),
-        (Sampler::CosineHemisphere, Sampler::UniformHemisphere),
         (
-            Sampler::PhongLobe { n: 20.0 },
-            Sampler::PhongLobe { n: 22.0 },
+            warp::CosineHemisphere.into(),
+            warp::UniformHemisphere.into(),
         ),
-        (Sampler::PolarDisk, Sampler::Tent),
+        (
+            warp::PhongLobe { n: 20.0 }.into(),
+            warp::PhongLobe { n: 22.0 }.into(),
+        ),
+        (warp::PolarDisk.into(), warp::TentPair.into()),
     ];
     for (k, (s, judge)) in controls.into_iter().enumerate() {
         let r = s.chi_square_against(&judge, 200_000, u_table(99 + k as u64));

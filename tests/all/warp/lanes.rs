@@ -418,7 +418,7 @@ fn the_tent_pair_drops_both_coordinates_at_nan_in_either() {
         f32::from_bits(0xffc0_1234),
         f32::from_bits(0x7f80_0001),
     ];
-    let s = registry::Sampler::Tent;
+    let s = registry::Sampler::from(mcsample::warp::TentPair);
     for x in odd {
         for u in [Vec2::new(x, 0.3), Vec2::new(0.3, x), Vec2::splat(x)] {
             let (t, pdf) = s.sample(u);

@@ -21,7 +21,7 @@ use glam::{Vec2, Vec3};
 use mcsample::frame::{self, Frame};
 use mcsample::seq;
 use mcsample::verify::check_lanes;
-use mcsample::verify::registry::{self, SPECIAL_PARAMS, Sampler};
+use mcsample::verify::registry::{self, Kind, SPECIAL_PARAMS, Sampler};
 use mcsample::x8::{F32x8, U32x8, Vec2x8, Vec3x8};
 
 /// The special u coordinates: 0, the smallest subnormal, 1e-30, 2⁻²⁴, ½, 1 − 2⁻²⁴, 1, NaN, −0,
@@ -83,17 +83,13 @@ fn special_points() -> Vec<Vec3> {
 /// special parameter, and each spherical polygon at every degenerate geometry.
 fn samplers() -> Vec<Sampler> {
     let mut all = registry::registry();
+    // The warps' parameters: the lights' and BSDFs' are fuzzed (`fuzz/fuzz_targets/warps.rs`).
     for s in registry::registry() {
-        if matches!(s, Sampler::UniformCone { .. } | Sampler::PhongLobe { .. }) {
+        if matches!(s.kind(), Kind::Warp(_)) && s.has_param() {
             all.extend(SPECIAL_PARAMS.iter().map(|&p| s.with_param(p)));
         }
     }
-    let polygons = registry::registry().into_iter().filter(|s| {
-        matches!(
-            s,
-            Sampler::SphericalTriangle { .. } | Sampler::SphericalRectangle { .. }
-        )
-    });
+    let polygons = registry::registry().into_iter().filter(|s| s.is_polygon());
     // One of each kind is enough: the degenerate geometry replaces the registered one.
     for s in polygons.step_by(3) {
         all.extend(

@@ -1,5 +1,5 @@
-//! The flash cost of everything a renderer would call: every warp with its pdf and inverse, the
-//! sequences, the packet RNG and the MIS weights, and the direct estimator with every strategy
+//! The flash cost of everything a renderer would call: every sampler of the registry (the warps,
+//! the lights, the BSDFs) with its pdf and inverse, the sequences, the packet RNG and the MIS weights, and the direct estimator with every strategy
 //! (chosen at run time) over every light type and both BSDFs. No printing, unlike `check`.
 
 #![no_std]
@@ -14,6 +14,7 @@ use mcsample::scene::{
     DiskLight, Lambert, Light, Phong, RectangleLight, SphereLight, TriangleLight,
 };
 use mcsample::x8::Vec2x8;
+use mcsample::registry::Sampler;
 use mcsample::{mis, seq, warp};
 
 #[entry]
@@ -21,27 +22,12 @@ fn main() -> ! {
     let u = bb(Vec2::new(0.3, 0.7));
     let (a, b, c) = (bb(Vec3::new(-0.5, -0.4, 1.0)), bb(Vec3::X), bb(Vec3::Y));
     let mut acc = 0.0f32;
-    let w = [
-        warp::cosine_hemisphere(u),
-        warp::uniform_hemisphere(u),
-        warp::uniform_sphere(u),
-        warp::uniform_cone(u, bb(0.2)),
-        warp::phong_lobe(u, bb(20.0)),
-        warp::uniform_triangle(u),
-        warp::spherical_triangle(u, a, b, c).0,
-        warp::spherical_rectangle(u, a, b, c).0,
-    ];
-    for w in w {
-        acc += w.x;
+    // Every sampler of the registry: its sample, pdf and inverse.
+    for s in Sampler::all() {
+        let (w, pdf) = s.sample(u);
+        acc += w.x + pdf + s.pdf(w) + s.inverse(w).y;
     }
-    acc += warp::cosine_hemisphere_inverse(w[0]).x + warp::uniform_sphere_inverse(w[2]).y;
-    acc += warp::uniform_cone_inverse(w[3], 0.2).x + warp::phong_lobe_inverse(w[4], 20.0).y;
-    acc += warp::spherical_triangle_inverse(w[6], a, b, c).x;
-    acc += warp::spherical_rectangle_inverse(w[7], a, b, c).y;
-    acc += warp::concentric_disk(u).x + warp::polar_disk(u).y + warp::tent(u.x);
-    acc +=
-        warp::spherical_triangle_pdf(w[6], a, b, c) + warp::spherical_rectangle_pdf(w[7], a, b, c);
-    acc += warp::cosine_hemisphere(Vec2x8::splat(u)).x.to_array()[bb(3)];
+    acc += warp::tent(u.x) + warp::cosine_hemisphere(Vec2x8::splat(u)).x.to_array()[bb(3)];
     let i = bb(17u32);
     acc += seq::sobol(i, 3, 7) + seq::cmj_2d(i, 8, 8, 0, 7).x + seq::stratified(i, 16, 3, 7);
     acc += Pcg32x8::new([1; 8], [2; 8]).next_f32x8().to_array()[bb(2)];

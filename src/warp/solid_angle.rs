@@ -1,0 +1,138 @@
+//! The spherical polygons as families of the registry ([`Family`]): the spherical triangle and
+//! rectangle sampled towards fixed geometry relative to the shading point, and what they share:
+//! how they are sampled ([`polygon_size`]) and the rectangle's domain test.
+
+use core::fmt;
+use core::hint::black_box;
+
+use glam::Vec3;
+
+use crate::lane::{V2, V3};
+use crate::math::Math;
+use crate::warp::family::{is_unit, lanes3};
+use crate::warp::{
+    Family, SPHERICAL_RECTANGLE_MIN_SR, SPHERICAL_TRIANGLE_MIN_SR, spherical_rectangle,
+    spherical_rectangle_inverse, spherical_rectangle_pdf, spherical_triangle,
+    spherical_triangle_inverse, spherical_triangle_pdf,
+};
+
+/// The registry's [`spherical_triangle`](crate::warp::spherical_triangle) towards vertices `v` (relative to the shading point).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SolidAngleTriangle {
+    /// The vertices.
+    pub v: [Vec3; 3],
+}
+
+impl SolidAngleTriangle {
+    /// How it is sampled, by the solid angle of its sample at u = (½, ½): see [`polygon_size`].
+    pub fn size(&self) -> &'static str {
+        polygon_size(
+            self.sampler::<f32>()(V2::new(0.5, 0.5)).1,
+            SPHERICAL_TRIANGLE_MIN_SR,
+        )
+    }
+}
+
+impl Family for SolidAngleTriangle {
+    fn name(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "spherical_triangle {}", self.size())
+    }
+    fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
+        let v = self.v.map(lanes3::<L>);
+        // The geometry passes through `black_box` so that a loop over a batch pays the set-up
+        // at every sample, as a renderer does when each sample has its own shading point.
+        #[inline(always)]
+        move |u| {
+            let [a, b, c] = black_box(v);
+            spherical_triangle(u, a, b, c)
+        }
+    }
+    fn pdf<L: Math>(&self, x: V3<L>) -> L {
+        let [a, b, c] = self.v.map(lanes3::<L>);
+        spherical_triangle_pdf(x, a, b, c)
+    }
+    fn inverse<L: Math>(&self, x: V3<L>) -> Option<V2<L>> {
+        let [a, b, c] = self.v.map(lanes3::<L>);
+        Some(spherical_triangle_inverse(x, a, b, c))
+    }
+    fn in_domain(&self, x: Vec3) -> bool {
+        is_unit(x)
+    }
+}
+
+/// The registry's [`spherical_rectangle`](crate::warp::spherical_rectangle) towards corner + s·ex + t·ey: `v` is corner, ex, ey.
+/// Its sample is the point on the light.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SolidAngleRectangle {
+    /// Corner, ex, ey.
+    pub v: [Vec3; 3],
+}
+
+impl SolidAngleRectangle {
+    /// How it is sampled, by the solid angle of its sample at u = (½, ½): see [`polygon_size`].
+    pub fn size(&self) -> &'static str {
+        polygon_size(
+            self.sampler::<f32>()(V2::new(0.5, 0.5)).1,
+            SPHERICAL_RECTANGLE_MIN_SR,
+        )
+    }
+}
+
+impl Family for SolidAngleRectangle {
+    fn name(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "spherical_rectangle {}", self.size())
+    }
+    fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
+        let v = self.v.map(lanes3::<L>);
+        // Through `black_box`, as for the triangle: the set-up is paid at every sample.
+        #[inline(always)]
+        move |u| {
+            let [c, ex, ey] = black_box(v);
+            spherical_rectangle(u, c, ex, ey)
+        }
+    }
+    fn pdf<L: Math>(&self, x: V3<L>) -> L {
+        let [c, ex, ey] = self.v.map(lanes3::<L>);
+        spherical_rectangle_pdf(x.normalize(), c, ex, ey)
+    }
+    fn inverse<L: Math>(&self, x: V3<L>) -> Option<V2<L>> {
+        let [c, ex, ey] = self.v.map(lanes3::<L>);
+        Some(spherical_rectangle_inverse(x, c, ex, ey))
+    }
+    fn in_domain(&self, x: Vec3) -> bool {
+        on_parallelogram(x, self.v)
+    }
+}
+
+/// How a spherical polygon is sampled, from `pdf`, its sample's pdf at u = (½, ½), and the
+/// solid angle below which it is sampled by area: "area" below that threshold (or degenerate),
+/// "small" up to 0.5 sr, "large" above.
+pub fn polygon_size(pdf: f32, min_sr: f32) -> &'static str {
+    let omega = 1.0 / pdf as f64;
+    if omega.is_nan() || omega < min_sr as f64 {
+        "area"
+    } else if omega > 0.5 {
+        "large"
+    } else {
+        "small"
+    }
+}
+
+/// True when `x` lies on the parallelogram corner + s·ex + t·ey (`v` = corner, ex, ey), within
+/// 1e-5 of the light's size and distance, in the plane and across it: an f32 point far from the
+/// origin is rounded on the scale of its distance, not of the light.
+fn on_parallelogram(x: Vec3, v: [Vec3; 3]) -> bool {
+    let d = x.as_dvec3() - v[0].as_dvec3();
+    let (ex, ey) = (v[1].as_dvec3(), v[2].as_dvec3());
+    // (s, t) from the 2×2 Gram system, so that edges only nearly orthogonal (as rounding leaves
+    // them) do not leak one coordinate into the other.
+    let (xx, xy, yy) = (ex.dot(ex), ex.dot(ey), ey.dot(ey));
+    let (dx, dy) = (d.dot(ex), d.dot(ey));
+    let det = xx * yy - xy * xy;
+    let s = (dx * yy - dy * xy) / det;
+    let t = (dy * xx - dx * xy) / det;
+    let off = (d - ex * s - ey * t).length();
+    let tol = 1e-5 * (ex.length() + ey.length() + v[0].as_dvec3().length());
+    let (ms, mt) = (tol / ex.length(), tol / ey.length());
+    x.is_finite() && (-ms..=1.0 + ms).contains(&s) && (-mt..=1.0 + mt).contains(&t) && off <= tol
+}

@@ -37,8 +37,7 @@
 //! The dimension selects an independent pattern; two-dimensional generators take the number of a
 //! dimension *pair*, so `sobol_2d(i, d, seed)` is `(sobol(i, 2d, seed), sobol(i, 2d + 1, seed))`.
 //!
-//! The generators are always inlined, as their bodies were before they became the public face:
-//! with a constant count or dimension the divisions and key schedules fold away, which an
+//! The generators are always inlined: with a constant count or dimension the divisions and key schedules fold away, which an
 //! out-of-line call loses (the report measured scalar `stratified` calls 2.7× slower).
 //!
 //! [`quality`] measures point sets: L2-star discrepancy and the (0, m, 2)-net property.

@@ -35,9 +35,9 @@ pub(crate) fn concentric_with_one_minus_r<L: Math>(u: V2<L>) -> (V2<L>, L) {
     let a_major = abs_a.gt(abs_b);
     let r = abs_a.max(abs_b);
     let minor = abs_a.min(abs_b);
-    // At the centre r = 0: t = 0 keeps the result at the origin instead of 0/0. (Dividing by
-    // max(r, least normal) instead gives the same bits in one operation fewer, but cost the
-    // scalar per-call loop 3 instructions: LLVM no longer paired the sine and cosine polynomials.)
+    // At the centre r = 0: t = 0 keeps the result at the origin instead of 0/0. A select rather
+    // than a division by max(r, least normal): the same bits, and LLVM pairs the sine and cosine
+    // polynomials of the scalar per-call loop only with the select.
     let t = L::select(r.eq(L::ZERO), L::ZERO, minor / r);
     let (s, c) = t.sincos_pi4();
     // Wedge |a| > |b|: φ = (π/4)t. Otherwise φ = π/2 − (π/4)t, which swaps sin and cos. s ≥ +0

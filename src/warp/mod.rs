@@ -21,8 +21,8 @@
 //! assert!(warp::uniform_cone_pdf(w, 0.1) > 0.0);
 //! ```
 //!
-//! The warps of the disk, hemisphere, sphere, cone, lobe, triangle and tent are always inlined,
-//! as their bodies were before they became the public face: they are a few dozen instructions,
+//! The warps of the disk, hemisphere, sphere, cone, lobe, triangle and tent are always inlined:
+//! they are a few dozen instructions,
 //! and a caller that composes several (a camera sample draws a disk and two tents) would
 //! otherwise pay calls. The spherical polygon samplers are `#[inline]`, left to the compiler.
 //!

@@ -7,50 +7,11 @@
 //! along ex, ŷ along ey, the plane at distance d from the shading point, the rectangle
 //! [x0, x1] × [y0, y1] in it, and (0, 0) the foot of the perpendicular from the shading point.
 //!
-//! # The map without cancellation
-//!
-//! Ureña et al. pick x by inverting the solid angle S(x) of the slab [x0, x] × [y0, y1], and y
-//! uniformly in the sine of the elevation within the column at x. They form S as the quad's
-//! angle sum minus 2π, four angles near π/2 that cancel for a small rectangle, and solve for x
-//! through an angle near π: the f32 direction error against the f64 instance of the same code
-//! was 2e-6 at 0.01 sr and 2e-5 at 1e-3 sr for a facing square, and up to 4e-2 for random
-//! grazing rectangles.
-//!
-//! Here every quantity is a solid angle measured from where it is small. The planes of the edges
-//! y = y0 and y = y1 both contain the x axis; between them lies a lune of dihedral angle β (area
-//! 2β, β on either side of the foot), and the plane through the shading point and the line x on
-//! the rectangle cuts it into L(x), the part towards −x, and R(x) = 2β − L(x). For each edge x0,
-//! x1 the set-up computes the part between the foot and the edge, g = |G(x)|, and the part
-//! beyond it, t = β − g, each in half-angle form (Van Oosterom–Strackee's for the triangle with a
-//! vertex at ±x̂, the difference of the two corner triangles' angles for g, every sum rewritten
-//! so that its terms have one sign), the smaller one from its own arctangent and the larger as β
-//! less it. L0 = L(x0) and R1 = R(x1) are then t or β + g, and Ω is g0 + g1 across the foot, or
-//! Van Oosterom–Strackee on the slab split into quadrants (whose denominators cannot cancel) on
-//! one side of it. The sample's x has L = L0 + u₀Ω and R = R1 + (1 − u₀)Ω, sums of non-negative
-//! terms, and solving the lune's area G = (L − R)/2 for x gives the tangent form
-//!
-//! x/d = sin G / (2 √(sin(L/2) sin(R/2) sin(ψ₁ + R/2) sin(ψ₁ + L/2))),
-//!
-//! sin G = sin(L/2) cos(R/2) − cos(L/2) sin(R/2), where ψ₁ is the angle from the edge y = y1 to
-//! the horizon beyond it and ψ₀ likewise for y0 (ψ₀ + ψ₁ + β = π, so sin(ψ₁ + R/2) =
-//! sin(ψ₀ + L/2) and sin(ψ₁ + L/2) = sin(ψ₀ + R/2)). Each sine is taken of whichever of its two
-//! arguments is at most π/2, a sum of non-negative angles known to a few ulp (L/2 near π, for a
-//! lune close to a hemisphere, becomes π − L/2 = Ψ + R/2 with Ψ = ψ₀ + ψ₁), so x keeps its
-//! relative precision near the foot, far from it, at a grazing angle and at any size.
-//!
-//! The elevation sine h = y/√(ρ² + y²) (ρ² = x² + d²) is interpolated as before, but its span
-//! h1 − h0, and 1 ∓ h near the horizon, come from forms without cancellation, so that y keeps
-//! its precision for a far rectangle (h0 ≈ h1) and near the horizon (h ≈ ±1).
-//!
-//! The frame is formed with f64 products where f32 would cancel (the distance d, which a grazing
-//! view makes a small part of |corner|; the far edges x1, y1, which for a far corner and a near
-//! edge are small differences), and a sample is corner + s·ex + t·ey where the corner is not much
-//! farther than the sample, else foot + x·x̂ + y·ŷ, so that its rounding stays a few ulp of its
-//! own length. The set-up first scales the geometry by a power of two that brings it near unit
-//! size, which is exact and changes nothing but keeps squares and cubes of coordinates from
-//! 1e-17 to 1e19 in range. Measured against its f64 instance, the f32 map's direction error is
-//! at most 5.7e-7 on 2.4e5 random rectangles from 2π down to 1e-9 sr
-//! (`tests/all/warp/rectangle_accuracy.rs`).
+//! Every quantity of the map is a solid angle measured from where it is small, the frame and
+//! the far edges are formed with f64 products where f32 would cancel, and the set-up first
+//! scales the geometry by an exact power of two, so that the f32 map's direction error against
+//! its f64 instance stays at most 5.7e-7 from 2π down to 1e-9 sr. The derivation is in
+//! `docs/polygons.md` ("The rectangle without cancellation").
 
 use core::marker::PhantomData;
 
@@ -67,9 +28,8 @@ use crate::warp::polygon::{cross_wide, dot_wide, plane_dot};
 /// sr, measured on 2.4e5 random rectangles of every kind (anywhere above the horizon, far and
 /// small, grazing, straddling the foot of the perpendicular, larger than their distance, nearly
 /// edge-on; `tests/all/warp/rectangle_accuracy.rs`, 80 u each), and at most 2.8e-7 on the report's stability
-/// rows (a facing square and a tilted 2:1 rectangle from 1e-9 to 6.3 sr). (The old Σγ − 2π form:
-/// 2e-6 at 0.01 sr, 9e-6 at 1e-3 sr and 4e-4 at 1e-6 sr on the facing square, up to 4e-2 on random
-/// grazing rectangles, which is why this was 0.02.) So, as for the triangle, the threshold is set
+/// rows (a facing square and a tilted 2:1 rectangle from 1e-9 to 6.3 sr). So, as for the
+/// triangle, the threshold is set
 /// by the f32 direction grid, not by the algorithm: below 1e-6 sr (0.06° across) a unit f32 vector
 /// resolves only 1e-4 of the light, and area sampling there is exact and cheaper, its pdf uniform
 /// in solid angle to about the light's angular size (1e-3).
@@ -77,8 +37,7 @@ pub const SPHERICAL_RECTANGLE_MIN_SR: f32 = 1.0e-6;
 /// Above this solid angle (sr) the rectangle would be sampled by area too: 2π, which no
 /// rectangle reaches. The map keeps its accuracy (3.5e-7 measured in [6, 2π), for rectangles up
 /// to 1e5 times larger than their distance), and area sampling of such a light, near and huge,
-/// has a pdf that varies by orders of magnitude across it. (The old form reached 8e-5 at
-/// 6.2 sr, which is why this was 6.)
+/// has a pdf that varies by orders of magnitude across it.
 pub const SPHERICAL_RECTANGLE_MAX_SR: f32 = core::f32::consts::TAU;
 /// The largest ratio of a rectangle's size (|ex| + |ey|) to its plane's distance from the
 /// shading point that the rectangle's f32 set-up and inverse reach. The slab solid angles
@@ -477,8 +436,8 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
     // is off by about 1.5·|cos| (measured against the parallelogram's exact Ω: 1.5e-4 at 1e-4,
     // 2e-6 at 1e-6). Edges further than 2e-6 from orthogonal are sampled by area, whose pdf and
     // inside test hold for any parallelogram; f32 rounding leaves orthogonal edges about 1e-7
-    // off, well inside. (The test was 1e-4 until the fuzz target found a strip whose Ω from one
-    // corner was 7.5e-5 off.)
+    // off, well inside, while a threshold of 1e-4 would let through strips whose Ω from one
+    // corner is 7.5e-5 off.
     let skewed = cos_xy.abs().gt(L::c(2e-6));
     let by_area = omega.lt(L::c(SPHERICAL_RECTANGLE_MIN_SR as f64))
         | omega.gt(L::c(SPHERICAL_RECTANGLE_MAX_SR as f64))

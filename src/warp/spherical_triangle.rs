@@ -352,9 +352,8 @@ impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
     /// The triangle with vertices `a`, `b`, `c` relative to the shading point, in either winding.
     // Always inlined: a caller that samples once (the free functions, a light per shading point)
     // then computes only the set-up its sample, pdf or inverse reads, and keeps it in registers
-    // rather than returning the whole set-up through memory. Measured on the scalar free
-    // function: 1.72× → 1.36–1.44× the textbook triangle (SSE2), 2.41× → 2.06× (AVX2).
-    // The sample stays a call: inlined too, the spherical triangle's was 5 % slower. On bare
+    // rather than returning the whole set-up through memory. The sample stays a call: inlined
+    // too, the scalar free function measured 5 % slower. On bare
     // metal, where flash is what counts, the set-up stays one copy: inlined into each free
     // function it added 44 KB to a Cortex-M4F firmware that links them all.
     #[cfg_attr(target_os = "none", inline)]

@@ -761,3 +761,40 @@ pub fn centred_rectangle(centre: D3, nrm: D3, sx: f64, sy: f64, rot: f64) -> (D3
     let corner = sub(centre, add(scale(ex, 0.5), scale(ey, 0.5)));
     (corner, ex, ey)
 }
+
+// ---------------------------------------------------------------------------------------------
+// Hard cases: one named test per case, which collects every sub-failure
+
+/// One hard case as its own `#[test]`: `$what` states what the case requires and heads the
+/// failure message; the body returns all of the case's sub-failures at once.
+macro_rules! hard_case {
+    ($name:ident, $what:literal, $body:expr $(,)?) => {
+        #[test]
+        fn $name() {
+            let body: fn() -> Result<(), String> = $body;
+            if let Err(e) = body() {
+                panic!("{}:\n    {}", $what, e);
+            }
+        }
+    };
+}
+pub(crate) use hard_case;
+
+/// `Ok` where `cond` holds, else the message.
+pub fn check(cond: bool, msg: impl FnOnce() -> String) -> Result<(), String> {
+    if cond { Ok(()) } else { Err(msg()) }
+}
+
+/// Runs every (name, result) and collects the failures.
+pub fn collect(results: impl IntoIterator<Item = Result<(), String>>) -> Result<(), String> {
+    let errs: Vec<String> = results.into_iter().filter_map(Result::err).collect();
+    match errs.len() {
+        0 => Ok(()),
+        n if n <= 40 => Err(errs.join("\n    ")),
+        n => Err(format!(
+            "{}\n    … and {} more",
+            errs[..12].join("\n    "),
+            n - 12
+        )),
+    }
+}

@@ -2,7 +2,7 @@
 //!
 //! A module per layer, in the crate's own order (lanes and math, sequences, warps, camera,
 //! estimators, scene, direct lighting, the verification layer). Run one layer or one test by its path:
-//! `cargo test --test all warp::lanes`, `cargo test --test all hard_cases::case_04`.
+//! `cargo test --test all warp::lanes`, `cargo test --test all case_04`.
 //!
 //! Two modules are left out of the wasm32-wasip1 build: `math` spawns threads, which WASI
 //! preview 1 lacks, and `warp::properties` needs proptest, which does not build for wasm.
@@ -27,6 +27,7 @@ mod seq {
 mod warp {
     mod accuracy;
     mod distribution;
+    mod hard_cases;
     mod lanes;
     mod polygon_regressions;
     #[cfg(not(target_family = "wasm"))]
@@ -40,17 +41,18 @@ mod camera;
 
 mod estimate {
     mod accumulators;
+    mod hard_cases;
     mod mis;
     mod mis_estimators;
     mod reference;
 }
 
 mod scene {
+    mod hard_cases;
     mod lights;
 }
 
 mod direct;
-mod hard_cases;
 mod verify;
 
 #[cfg(feature = "rand")]

@@ -1,6 +1,7 @@
 //! The flash cost of everything a renderer would call: every sampler of the registry (the warps,
-//! the lights, the BSDFs) with its pdf and inverse, the sequences, the packet RNG and the MIS weights, and the direct estimator with every strategy
-//! (chosen at run time) over every light type and both BSDFs. No printing, unlike `check`.
+//! the lights, the BSDFs) with its pdf and inverse, the sequences, the packet RNG and the MIS
+//! weights, and the direct estimator with every strategy (chosen at run time) over every light
+//! type and both BSDFs. No printing, unlike `check`.
 
 #![no_std]
 #![no_main]
@@ -9,12 +10,12 @@ use core::hint::black_box as bb;
 use cortex_m_rt::entry;
 use glam::{Vec2, Vec3};
 use mcsample::direct::{self, Config, Lights, ShadingPoint, Strategy};
+use mcsample::registry::Sampler;
 use mcsample::rng::Pcg32x8;
 use mcsample::scene::{
     DiskLight, Lambert, Light, Phong, RectangleLight, SphereLight, TriangleLight,
 };
 use mcsample::x8::Vec2x8;
-use mcsample::registry::Sampler;
 use mcsample::{mis, seq, warp};
 
 #[entry]

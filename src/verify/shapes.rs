@@ -74,6 +74,11 @@ fn edge_points(p: DVec3, pts: &[DVec3], off: f64) -> Vec<DVec3> {
     out
 }
 
+/// A round shape's angular size: its radius over its centre's distance from `p`.
+fn radius_over_distance(center: Vec3, radius: f32, p: Vec3) -> f64 {
+    f64::from(radius / (center - p).length())
+}
+
 /// The tolerance of a planar hit for an f32 direction rounded by 8 ulp: it moves the hit by
 /// 8εt/|cos θ_l| in the plane, relative to the shortest edge.
 fn plane_tolerance(t: f64, w: DVec3, n: DVec3, edge: f64) -> f64 {
@@ -113,7 +118,7 @@ impl ShapeFacts for scene::Sphere {
     }
 
     fn angular_size(&self, p: Vec3) -> f64 {
-        f64::from(self.radius / (self.center - p).length())
+        radius_over_distance(self.center, self.radius, p)
     }
 
     fn centre(&self) -> Vec3 {
@@ -163,6 +168,14 @@ impl ShapeFacts for scene::Disk {
         (t > 0.0 && (x - self.center.as_dvec3()).length() <= r + tol).then_some(t)
     }
 
+    fn angular_size(&self, p: Vec3) -> f64 {
+        radius_over_distance(self.center, self.radius, p)
+    }
+
+    fn centre(&self) -> Vec3 {
+        self.center
+    }
+
     fn silhouette(&self, p: DVec3, off: f64) -> Vec<DVec3> {
         // Rim points turned across the silhouette: the plane through the shading point and the
         // rim's tangent line at the point is the silhouette's great circle there.
@@ -179,14 +192,6 @@ impl ShapeFacts for scene::Disk {
                 ((x - p).normalize() + plane * (sign * off)).normalize()
             })
             .collect()
-    }
-
-    fn angular_size(&self, p: Vec3) -> f64 {
-        f64::from(self.radius / (self.center - p).length())
-    }
-
-    fn centre(&self) -> Vec3 {
-        self.center
     }
 
     fn cap(&self, p: Vec3) -> Cap {

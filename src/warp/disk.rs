@@ -1,15 +1,13 @@
 //! Square → unit disk: Shirley–Chiu's concentric map and the polar map. Both are area-preserving
 //! up to a constant, so the area pdf is 1/π.
 
-use core::fmt;
-
 use glam::Vec3;
 
 use crate::lane::{V2, V3};
 use crate::math::Math;
 use crate::point::Point2;
-use crate::warp::Family;
 use crate::warp::common::{azimuth_fraction, clamp_u};
+use crate::warp::family::plain_family;
 
 /// The concentric map, also returning 1 − r for the radius r of the point.
 ///
@@ -131,6 +129,32 @@ pub struct ConcentricDisk;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PolarDisk;
 
+/// The concentric map's point as the registry's 3D sample (x, y, 0).
+#[inline(always)]
+fn concentric_3d<L: Math>(u: V2<L>) -> V3<L> {
+    let p = concentric_disk(u);
+    V3::new(p.x, p.y, L::ZERO)
+}
+
+/// The polar map's point as the registry's 3D sample (x, y, 0).
+#[inline(always)]
+fn polar_3d<L: Math>(u: V2<L>) -> V3<L> {
+    let p = polar_disk(u);
+    V3::new(p.x, p.y, L::ZERO)
+}
+
+/// The concentric inverse of the registry's 3D sample.
+#[inline(always)]
+fn concentric_of<L: Math>(x: V3<L>) -> V2<L> {
+    concentric_disk_inverse(V2::new(x.x, x.y))
+}
+
+/// The polar inverse of the registry's 3D sample.
+#[inline(always)]
+fn polar_of<L: Math>(x: V3<L>) -> V2<L> {
+    polar_disk_inverse(V2::new(x.x, x.y))
+}
+
 /// The disk pdf of a point widened to (x, y, 0): 0 off the plane.
 #[inline(always)]
 fn disk_pdf<L: Math>(x: V3<L>) -> L {
@@ -146,46 +170,14 @@ fn in_disk(x: Vec3) -> bool {
     x.is_finite() && x.z == 0.0 && x.truncate().as_dvec2().length_squared() <= 1.0 + 1e-6
 }
 
-impl Family for ConcentricDisk {
-    fn name(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str("concentric_disk")
-    }
-    fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
-        #[inline(always)]
-        |u| {
-            let p = concentric_disk(u);
-            (V3::new(p.x, p.y, L::ZERO), uniform_disk_pdf(p))
-        }
-    }
-    fn pdf<L: Math>(&self, x: V3<L>) -> L {
-        disk_pdf(x)
-    }
-    fn inverse<L: Math>(&self, x: V3<L>) -> Option<V2<L>> {
-        Some(concentric_disk_inverse(V2::new(x.x, x.y)))
-    }
-    fn in_domain(&self, x: Vec3) -> bool {
-        in_disk(x)
-    }
-}
-
-impl Family for PolarDisk {
-    fn name(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str("polar_disk")
-    }
-    fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
-        #[inline(always)]
-        |u| {
-            let p = polar_disk(u);
-            (V3::new(p.x, p.y, L::ZERO), uniform_disk_pdf(p))
-        }
-    }
-    fn pdf<L: Math>(&self, x: V3<L>) -> L {
-        disk_pdf(x)
-    }
-    fn inverse<L: Math>(&self, x: V3<L>) -> Option<V2<L>> {
-        Some(polar_disk_inverse(V2::new(x.x, x.y)))
-    }
-    fn in_domain(&self, x: Vec3) -> bool {
-        in_disk(x)
-    }
-}
+plain_family!(
+    ConcentricDisk,
+    "concentric_disk",
+    concentric_3d,
+    disk_pdf,
+    concentric_of,
+    in_disk
+);
+plain_family!(
+    PolarDisk, "polar_disk", polar_3d, disk_pdf, polar_of, in_disk
+);

@@ -75,3 +75,34 @@ pub(crate) fn lanes3<L: Math>(p: Vec3) -> V3<L> {
 pub(crate) fn is_unit(x: Vec3) -> bool {
     x.is_finite() && (x.as_dvec3().length() - 1.0).abs() <= 1e-6
 }
+
+/// The [`Family`] of a warp without parameters whose sampler returns its pdf function's value at
+/// the sample: `plain_family!(Type, "name", warp, pdf, inverse, in_domain)`. Every item of the
+/// contract is named at the call; the macro only writes the impl around them.
+macro_rules! plain_family {
+    ($ty:ty, $name:literal, $warp:expr, $pdf:expr, $inverse:expr, $in_domain:expr $(,)?) => {
+        impl $crate::warp::Family for $ty {
+            fn name(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+                f.write_str($name)
+            }
+            fn sampler<L: $crate::math::Math>(
+                &self,
+            ) -> impl Fn($crate::lane::V2<L>) -> ($crate::lane::V3<L>, L) + Copy {
+                $crate::warp::family::with_pdf($warp, $pdf)
+            }
+            fn pdf<L: $crate::math::Math>(&self, x: $crate::lane::V3<L>) -> L {
+                ($pdf)(x)
+            }
+            fn inverse<L: $crate::math::Math>(
+                &self,
+                x: $crate::lane::V3<L>,
+            ) -> Option<$crate::lane::V2<L>> {
+                Some(($inverse)(x))
+            }
+            fn in_domain(&self, x: glam::Vec3) -> bool {
+                ($in_domain)(x)
+            }
+        }
+    };
+}
+pub(crate) use plain_family;

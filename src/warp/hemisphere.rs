@@ -1,17 +1,14 @@
 //! Square → upper hemisphere (+z): uniform, and cosine-weighted by Malley's method.
 
-use core::fmt;
-
 use glam::Vec3;
 
 use crate::lane::{V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
-use crate::warp::Family;
 use crate::warp::common::{azimuth_fraction, clamp_u, clamp01};
 use crate::warp::disk::{concentric_disk_inverse, concentric_with_one_minus_r};
 use crate::warp::family::is_unit;
-use crate::warp::family::with_pdf;
+use crate::warp::family::plain_family;
 
 /// Square → upper hemisphere (+z), uniform in solid angle (pdf 1/(2π) per steradian,
 /// [`uniform_hemisphere_pdf`]).
@@ -89,38 +86,20 @@ pub struct UniformHemisphere;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CosineHemisphere;
 
-impl Family for UniformHemisphere {
-    fn name(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str("uniform_hemisphere")
-    }
-    fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
-        with_pdf(uniform_hemisphere, uniform_hemisphere_pdf)
-    }
-    fn pdf<L: Math>(&self, x: V3<L>) -> L {
-        uniform_hemisphere_pdf(x)
-    }
-    fn inverse<L: Math>(&self, x: V3<L>) -> Option<V2<L>> {
-        Some(uniform_hemisphere_inverse(x))
-    }
-    fn in_domain(&self, x: Vec3) -> bool {
-        is_unit(x) && x.z >= 0.0
-    }
-}
+plain_family!(
+    UniformHemisphere,
+    "uniform_hemisphere",
+    uniform_hemisphere,
+    uniform_hemisphere_pdf,
+    uniform_hemisphere_inverse,
+    |x: Vec3| is_unit(x) && x.z >= 0.0,
+);
 
-impl Family for CosineHemisphere {
-    fn name(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str("cosine_hemisphere")
-    }
-    fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
-        with_pdf(cosine_hemisphere, cosine_hemisphere_pdf)
-    }
-    fn pdf<L: Math>(&self, x: V3<L>) -> L {
-        cosine_hemisphere_pdf(x)
-    }
-    fn inverse<L: Math>(&self, x: V3<L>) -> Option<V2<L>> {
-        Some(cosine_hemisphere_inverse(x))
-    }
-    fn in_domain(&self, x: Vec3) -> bool {
-        is_unit(x) && x.z >= 0.0
-    }
-}
+plain_family!(
+    CosineHemisphere,
+    "cosine_hemisphere",
+    cosine_hemisphere,
+    cosine_hemisphere_pdf,
+    cosine_hemisphere_inverse,
+    |x: Vec3| is_unit(x) && x.z >= 0.0,
+);

@@ -1,16 +1,11 @@
 //! Square → unit sphere, uniform by area.
 
-use core::fmt;
-
-use glam::Vec3;
-
 use crate::lane::{V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
-use crate::warp::Family;
 use crate::warp::common::{azimuth_fraction, clamp_u, one_minus_z};
 use crate::warp::family::is_unit;
-use crate::warp::family::with_pdf;
+use crate::warp::family::plain_family;
 
 /// Square → unit sphere, uniform (pdf 1/(4π) per steradian, [`uniform_sphere_pdf`]).
 ///
@@ -48,20 +43,11 @@ pub fn uniform_sphere_inverse<P: Point3<Lane = L>, L: Math>(w: P) -> P::Vec2 {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct UniformSphere;
 
-impl Family for UniformSphere {
-    fn name(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str("uniform_sphere")
-    }
-    fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
-        with_pdf(uniform_sphere, uniform_sphere_pdf)
-    }
-    fn pdf<L: Math>(&self, x: V3<L>) -> L {
-        uniform_sphere_pdf(x)
-    }
-    fn inverse<L: Math>(&self, x: V3<L>) -> Option<V2<L>> {
-        Some(uniform_sphere_inverse(x))
-    }
-    fn in_domain(&self, x: Vec3) -> bool {
-        is_unit(x)
-    }
-}
+plain_family!(
+    UniformSphere,
+    "uniform_sphere",
+    uniform_sphere,
+    uniform_sphere_pdf,
+    uniform_sphere_inverse,
+    is_unit,
+);

@@ -1,15 +1,12 @@
 //! Square → barycentrics of a uniform point in a triangle, by Heitz's low-distortion map.
 
-use core::fmt;
-
 use glam::Vec3;
 
 use crate::lane::{V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
-use crate::warp::Family;
 use crate::warp::common::clamp_u;
-use crate::warp::family::with_pdf;
+use crate::warp::family::plain_family;
 
 /// Square → barycentrics (b₀, b₁, b₂) of a uniform point in a triangle, by Heitz's
 /// low-distortion map (2019), with density [`uniform_triangle_pdf`].
@@ -67,21 +64,14 @@ pub fn uniform_triangle_pdf<P: Point3<Lane = L>, L: Math>(b: P) -> L {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct UniformTriangle;
 
-impl Family for UniformTriangle {
-    fn name(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str("uniform_triangle")
-    }
-    fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
-        with_pdf(uniform_triangle, uniform_triangle_pdf)
-    }
-    fn pdf<L: Math>(&self, x: V3<L>) -> L {
-        uniform_triangle_pdf(x)
-    }
-    fn inverse<L: Math>(&self, x: V3<L>) -> Option<V2<L>> {
-        Some(uniform_triangle_inverse(x))
-    }
-    fn in_domain(&self, x: Vec3) -> bool {
+plain_family!(
+    UniformTriangle,
+    "uniform_triangle",
+    uniform_triangle,
+    uniform_triangle_pdf,
+    uniform_triangle_inverse,
+    |x: Vec3| {
         let sum = x.x as f64 + x.y as f64 + x.z as f64;
         x.is_finite() && x.min_element() >= 0.0 && (sum - 1.0).abs() <= 1e-6
-    }
-}
+    },
+);

@@ -17,14 +17,14 @@
 //! | 2 | [`point`] | [`Point2`](point::Point2), [`Point3`](point::Point3): the argument type that picks a call's width | lane, math |
 //! | 2 | [`x8`] | the public packet types | lane |
 //! | 2 | [`rng`] | `Pcg32x8`: eight PCG32 streams, lane *i* equal to `rand_pcg::Pcg32` | lane |
-//! | 2 | [`seq`] | stateless generators of (index, dimension, seed), the estimators' sample sources, and point-set quality measures | lane, rng |
+//! | 3 | [`seq`] | stateless generators of (index, dimension, seed), the estimators' sample sources, and point-set quality measures | lane, rng |
 //! | 3 | [`frame`] | orthonormal frames from a normal | lane, math, point |
 //! | 3 | [`warp`] | square → disk, hemisphere, sphere, cone, Phong lobe, triangle, spherical triangle and rectangle, tent; each family's [`Family`](warp::Family) for the registry | lane, math, point |
 //! | 4 | [`camera`] | film, lens and time samples of a pixel | seq, warp |
 //! | 4 | `distr` (feature `rand`) | rand's `Distribution` for the warps | warp |
 //! | 4 | [`estimate`], [`mis`] | accumulators, roulette, splitting; MIS weights, optimal MIS, the RIS reservoir | lane, math, warp |
 //! | 4 | [`reference`](mod@reference) | analytic f64 irradiance references | core and libm only |
-//! | 5 | [`scene`] | sphere, disk, triangle and rectangle lights, light selection, Lambert and modified Phong BSDFs | lane, math, point, frame, warp |
+//! | 5 | [`scene`] | light shapes (sphere, disk, triangle, parallelogram) behind one [`Shape`](scene::Shape) trait, emission written once over them, light selection, Lambert and modified Phong BSDFs | lane, math, point, frame, warp |
 //! | 6 | [`direct`] | the direct-lighting estimator and its strategies | every floor below |
 //! | 6 | [`registry`] | every sampler once, in one list: the warps' families, the lights' and the BSDFs' ([`Family`](warp::Family): name, sample, pdf, inverse, domain), without std, for the evidence and the firmware | warp, scene and the floors below |
 //! | — | [`verify`] | (std) χ² goodness of fit, the packet-vs-scalar lane check, the registry's evidence (one file per family) and the direct-lighting test scenes | anything below |

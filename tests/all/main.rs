@@ -4,8 +4,11 @@
 //! estimators, scene, direct lighting, the verification layer). Run one layer or one test by its path:
 //! `cargo test --test all warp::lanes`, `cargo test --test all case_04`.
 //!
-//! Two modules are left out of the wasm32-wasip1 build: `math` spawns threads, which WASI
-//! preview 1 lacks, and `warp::properties` needs proptest, which does not build for wasm.
+//! The wasm32-wasip1 build (`tests/wasi`) leaves out `math`, which spawns threads (WASI preview
+//! 1 has none), `warp::properties`, which needs proptest (it does not build for wasm), and the
+//! statistical studies (χ², convergence, the direct estimator's statistics, the MIS estimators,
+//! the references' quadrature, the rectangle's error bands, the harness's own tests), which
+//! measure distributions rather than arithmetic and run natively.
 
 mod common;
 
@@ -13,6 +16,7 @@ mod common;
 mod math;
 
 mod seq {
+    #[cfg(not(target_family = "wasm"))]
     mod convergence;
     mod generators;
     /// The integer generators' golden values, shared with the firmware (`tests/embedded`).
@@ -20,18 +24,21 @@ mod seq {
         include!("seq/golden.in");
     }
     mod independent;
+    #[cfg(not(target_family = "wasm"))]
     mod quality;
     mod rng;
 }
 
 mod warp {
     mod accuracy;
+    #[cfg(not(target_family = "wasm"))]
     mod distribution;
     mod hard_cases;
     mod lanes;
     mod polygon_regressions;
     #[cfg(not(target_family = "wasm"))]
     mod properties;
+    #[cfg(not(target_family = "wasm"))]
     mod rectangle_accuracy;
     mod roundtrip;
     mod sweep;
@@ -43,7 +50,9 @@ mod estimate {
     mod accumulators;
     mod hard_cases;
     mod mis;
+    #[cfg(not(target_family = "wasm"))]
     mod mis_estimators;
+    #[cfg(not(target_family = "wasm"))]
     mod reference;
 }
 
@@ -52,7 +61,9 @@ mod scene {
     mod lights;
 }
 
+#[cfg(not(target_family = "wasm"))]
 mod direct;
+#[cfg(not(target_family = "wasm"))]
 mod verify;
 
 #[cfg(feature = "rand")]

@@ -50,6 +50,11 @@ pub trait U32Lane:
     fn wrapping_sub(self, b: Self) -> Self;
     /// Lane-wise `a · b` mod 2³².
     fn wrapping_mul(self, b: Self) -> Self;
+    /// Lane-wise logical `self >> N` for a constant N in 0..32: a shift by an immediate in
+    /// packets. Use it for every constant count; `>>` is for counts known at run time.
+    fn shr_by<const N: i32>(self) -> Self;
+    /// Lane-wise `self << N` for a constant N in 0..32, as [`shr_by`](U32Lane::shr_by).
+    fn shl_by<const N: i32>(self) -> Self;
     /// Lane-wise `a ^ b`.
     #[inline(always)]
     fn xor(self, b: Self) -> Self {
@@ -91,6 +96,14 @@ pub trait U32Lane:
 impl U32Lane for u32 {
     type F = f32;
     type Vec2 = glam::Vec2;
+    #[inline(always)]
+    fn shr_by<const N: i32>(self) -> Self {
+        self >> N
+    }
+    #[inline(always)]
+    fn shl_by<const N: i32>(self) -> Self {
+        self << N
+    }
     inline_fns! {
         fn splat(x: u32) -> Self { x }
         fn wrapping_add(self, b: Self) -> Self { u32::wrapping_add(self, b) }
@@ -124,16 +137,24 @@ impl U32Lane for u32 {
 impl U32Lane for U32x8 {
     type F = F32x8;
     type Vec2 = V2<F32x8>;
+    #[inline(always)]
+    fn shr_by<const N: i32>(self) -> Self {
+        imm::shr::<N>(self)
+    }
+    #[inline(always)]
+    fn shl_by<const N: i32>(self) -> Self {
+        imm::shl::<N>(self)
+    }
     inline_fns! {
         fn splat(x: u32) -> Self { U32x8::splat(x) }
         fn wrapping_add(self, b: Self) -> Self { self + b }
         fn wrapping_sub(self, b: Self) -> Self { self - b }
-        fn wrapping_mul(self, b: Self) -> Self { self * b }
+        fn wrapping_mul(self, b: Self) -> Self { mul_x8(self, b) }
         fn div_rem(self, d: u32) -> (Self, Self) { Divisor::new(d).div_rem(self) }
         fn splat_from(repeated: &[u32; 8]) -> Self { U32x8::new(*repeated) }
         fn mul_hi(self, b: Self) -> Self { self.mul_keep_high(b) }
         fn gt_mask(self, b: Self) -> Self { self.simd_gt(b) }
-        fn top_bit_mask(self) -> Self { bytemuck::cast(bytemuck::cast::<U32x8, i32x8>(self) >> 31) }
+        fn top_bit_mask(self) -> Self { imm::sar31(self) }
         fn select(mask: Self, a: Self, b: Self) -> Self { mask.select(a, b) }
         fn any_nonzero(self) -> bool { self != U32x8::ZERO }
         fn reverse_bits(self) -> Self { reverse_bits_x8(self) }
@@ -141,9 +162,108 @@ impl U32Lane for U32x8 {
             bytemuck::cast::<U32x8, i32x8>(self).round_float() / F32x8::splat((den as i32) as f32)
         }
         fn to_unit_f32(self) -> F32x8 {
-            F32x8::from_i32x8(bytemuck::cast::<U32x8, i32x8>(self >> 8)) * F32x8::splat(TWO_POW_M24)
+            F32x8::from_i32x8(bytemuck::cast::<U32x8, i32x8>(imm::shr::<8>(self))) * F32x8::splat(TWO_POW_M24)
         }
     }
+}
+
+/// Shifts of a packet by a constant. `wide`'s shift operators take the count in a register, and
+/// on x86 build that register through memory: a store the load cannot always forward from, a
+/// stall of a dozen cycles per shift in the hash chains of the sequences. The immediate forms
+/// take the count in the instruction.
+#[cfg(target_arch = "x86_64")]
+mod imm {
+    use super::U32x8;
+    use wide::bytemuck::cast;
+
+    #[cfg(not(target_feature = "avx2"))]
+    use safe_arch::{m128i, shl_imm_u32_m128i, shr_imm_i32_m128i, shr_imm_u32_m128i};
+    #[cfg(target_feature = "avx2")]
+    use safe_arch::{shl_imm_u32_m256i, shr_imm_i32_m256i, shr_imm_u32_m256i};
+
+    /// One AVX2 register, or two SSE2 registers each shifted alike.
+    macro_rules! by {
+        ($avx2:expr, $sse2:expr, $x:expr) => {{
+            #[cfg(target_feature = "avx2")]
+            let r: U32x8 = cast($avx2(cast($x)));
+            #[cfg(not(target_feature = "avx2"))]
+            let r: U32x8 = {
+                let [a, b]: [m128i; 2] = cast($x);
+                cast([$sse2(a), $sse2(b)])
+            };
+            r
+        }};
+    }
+
+    #[inline(always)]
+    pub(super) fn shr<const N: i32>(x: U32x8) -> U32x8 {
+        by!(shr_imm_u32_m256i::<N>, shr_imm_u32_m128i::<N>, x)
+    }
+
+    #[inline(always)]
+    pub(super) fn shl<const N: i32>(x: U32x8) -> U32x8 {
+        by!(shl_imm_u32_m256i::<N>, shl_imm_u32_m128i::<N>, x)
+    }
+
+    /// The arithmetic shift by 31: each lane's top bit copied through the lane.
+    #[inline(always)]
+    pub(super) fn sar31(x: U32x8) -> U32x8 {
+        by!(shr_imm_i32_m256i::<31>, shr_imm_i32_m128i::<31>, x)
+    }
+}
+
+/// Shifts of a packet by a constant, where `wide`'s operators take it as it comes.
+#[cfg(not(target_arch = "x86_64"))]
+mod imm {
+    use super::U32x8;
+    use wide::{bytemuck::cast, i32x8};
+
+    #[inline(always)]
+    pub(super) fn shr<const N: i32>(x: U32x8) -> U32x8 {
+        x >> N as u32
+    }
+
+    #[inline(always)]
+    pub(super) fn shl<const N: i32>(x: U32x8) -> U32x8 {
+        x << N as u32
+    }
+
+    #[inline(always)]
+    pub(super) fn sar31(x: U32x8) -> U32x8 {
+        cast(cast::<U32x8, i32x8>(x) >> 31)
+    }
+}
+
+/// Lane-wise a·b mod 2³². The 32-bit lane multiply `pmulld` is SSE4.1, and without it `wide`
+/// multiplies one lane at a time through memory. SSE2's `pmuludq` multiplies lanes 0 and 2 into
+/// 64-bit products; a second one on the words shifted down takes lanes 1 and 3, and two shuffles
+/// and an interleave gather the four low halves: seven instructions per four lanes, in registers.
+#[cfg(all(target_arch = "x86_64", not(target_feature = "sse4.1")))]
+#[inline(always)]
+fn mul_x8(a: U32x8, b: U32x8) -> U32x8 {
+    use safe_arch::{
+        m128i, mul_widen_u32_odd_m128i, shr_imm_u64_m128i, shuffle_ai_f32_all_m128i,
+        unpack_low_i32_m128i,
+    };
+    let four = |a: m128i, b: m128i| {
+        let even = mul_widen_u32_odd_m128i(a, b);
+        let odd = mul_widen_u32_odd_m128i(shr_imm_u64_m128i::<32>(a), shr_imm_u64_m128i::<32>(b));
+        // The low words of the two products (dwords 0 and 2) to the bottom, then interleaved.
+        unpack_low_i32_m128i(
+            shuffle_ai_f32_all_m128i::<0b00_00_10_00>(even),
+            shuffle_ai_f32_all_m128i::<0b00_00_10_00>(odd),
+        )
+    };
+    let [a0, a1]: [m128i; 2] = bytemuck::cast(a);
+    let [b0, b1]: [m128i; 2] = bytemuck::cast(b);
+    bytemuck::cast([four(a0, b0), four(a1, b1)])
+}
+
+/// Lane-wise a·b mod 2³², `wide`'s multiply where the target has a 32-bit lane multiply.
+#[cfg(not(all(target_arch = "x86_64", not(target_feature = "sse4.1"))))]
+#[inline(always)]
+fn mul_x8(a: U32x8, b: U32x8) -> U32x8 {
+    a * b
 }
 
 /// Bit reversal of each lane with AVX2: one byte shuffle reverses the bytes of each lane, and two
@@ -176,7 +296,7 @@ fn reverse_bits_x8(x: U32x8) -> U32x8 {
     );
     let nibbles = U32x8::splat(0x0f0f_0f0f);
     let low = bytemuck::cast::<U32x8, u8x32>(swapped & nibbles);
-    let high = bytemuck::cast::<U32x8, u8x32>((swapped >> 4) & nibbles);
+    let high = bytemuck::cast::<U32x8, u8x32>(imm::shr::<4>(swapped) & nibbles);
     bytemuck::cast(
         u8x32::from(TABLES.1).swizzle_half_relaxed(low)
             | u8x32::from(TABLES.2).swizzle_half_relaxed(high),
@@ -188,11 +308,12 @@ fn reverse_bits_x8(x: U32x8) -> U32x8 {
 #[cfg(not(target_feature = "avx2"))]
 #[inline(always)]
 fn reverse_bits_x8(x: U32x8) -> U32x8 {
-    let x = (x >> 16) | (x << 16);
-    let x = ((x >> 8) & U32x8::splat(0x00ff_00ff)) | ((x & U32x8::splat(0x00ff_00ff)) << 8);
-    let x = ((x >> 4) & U32x8::splat(0x0f0f_0f0f)) | ((x & U32x8::splat(0x0f0f_0f0f)) << 4);
-    let x = ((x >> 2) & U32x8::splat(0x3333_3333)) | ((x & U32x8::splat(0x3333_3333)) << 2);
-    ((x >> 1) & U32x8::splat(0x5555_5555)) | ((x & U32x8::splat(0x5555_5555)) << 1)
+    use imm::{shl, shr};
+    let x = shr::<16>(x) | shl::<16>(x);
+    let x = (shr::<8>(x) & U32x8::splat(0x00ff_00ff)) | shl::<8>(x & U32x8::splat(0x00ff_00ff));
+    let x = (shr::<4>(x) & U32x8::splat(0x0f0f_0f0f)) | shl::<4>(x & U32x8::splat(0x0f0f_0f0f));
+    let x = (shr::<2>(x) & U32x8::splat(0x3333_3333)) | shl::<2>(x & U32x8::splat(0x3333_3333));
+    (shr::<1>(x) & U32x8::splat(0x5555_5555)) | shl::<1>(x & U32x8::splat(0x5555_5555))
 }
 
 /// Unsigned division of a lane by a scalar d ≥ 1 through a precomputed multiplier (Granlund and
@@ -298,6 +419,37 @@ mod tests {
                 ] {
                     assert_eq!(div.div_rem::<u32>(n), (n / d, n % d), "{n} / {d}");
                 }
+            }
+        }
+    }
+
+    #[test]
+    fn packet_products_are_the_scalar_products_in_every_lane() {
+        // Carries out of every bit position, the words with the top bit set that a signed
+        // multiply would get wrong, and lanes 1 and 3 that the second pmuludq computes.
+        let mut x = 0x9e37_79b9u32;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 17;
+            x ^= x << 5;
+            x
+        };
+        for _ in 0..10_000 {
+            let a: [u32; 8] = core::array::from_fn(|i| match i {
+                0 => u32::MAX,
+                5 => 0x8000_0001,
+                _ => next(),
+            });
+            let b: [u32; 8] = core::array::from_fn(|_| next());
+            let p = U32x8::new(a).wrapping_mul(U32x8::new(b)).to_array();
+            for i in 0..8 {
+                assert_eq!(
+                    p[i],
+                    a[i].wrapping_mul(b[i]),
+                    "lane {i}: {} · {}",
+                    a[i],
+                    b[i]
+                );
             }
         }
     }

@@ -43,10 +43,8 @@
 //! `0, 2⁻²⁴, …, 1 − 2⁻²⁴`, each with probability 2⁻²⁴, exactly representable in f32, so the
 //! result is in [0, 1) and is never 1.0.
 
+use crate::lane::{F32x8, U32Lane, U32x8, lane_of, zip_map};
 use rand_pcg::Pcg32;
-use wide::{bytemuck, i32x8};
-
-use crate::lane::{F32x8, U32x8, lane_of, zip_map};
 
 #[cfg(not(all(target_arch = "x86_64", not(target_feature = "avx2"))))]
 #[path = "lanes32.rs"]
@@ -142,9 +140,7 @@ impl Pcg32x8 {
     /// output `x` that [`next_u32x8`](Self::next_u32x8) would return. Exact, and never 1.0.
     #[inline]
     pub fn next_f32x8(&mut self) -> F32x8 {
-        let x = self.next_u32x8() >> 8;
-        // x < 2²⁴, so the signed conversion is exact and the scaling by a power of two is too.
-        F32x8::from_i32x8(bytemuck::cast::<U32x8, i32x8>(x)) * F32x8::splat(1.0 / 16_777_216.0)
+        self.next_u32x8().to_unit_f32()
     }
 
     /// Jumps every lane ahead by `delta` steps, as if [`next_u32x8`](Self::next_u32x8) had been

@@ -12,9 +12,9 @@ use crate::lane::U32Lane;
 /// It is a bijection of u32: xorshifts and odd multiplications are invertible.
 #[inline(always)]
 pub(crate) fn lowbias32<U: U32Lane>(x: U) -> U {
-    let x = x.xor(x.shr(16)).wrapping_mul(U::splat(0x7feb_352d));
-    let x = x.xor(x.shr(15)).wrapping_mul(U::splat(0x846c_a68b));
-    x.xor(x.shr(16))
+    let x = x.xor(x.shr_by::<16>()).wrapping_mul(U::splat(0x7feb_352d));
+    let x = x.xor(x.shr_by::<15>()).wrapping_mul(U::splat(0x846c_a68b));
+    x.xor(x.shr_by::<16>())
 }
 
 /// The golden-ratio constant ⌊2³²/φ⌋, used to keep (dim, seed) = (0, 0) away from the fixed point

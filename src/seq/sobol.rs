@@ -104,17 +104,12 @@ fn scramble_reversed<U: U32Lane>(x: U, seed: u32) -> U {
 /// of 32 column steps.
 #[inline(always)]
 fn pascal<U: U32Lane>(index: U) -> U {
-    let mut x = index;
-    for (shift, mask) in [
-        (1, 0x5555_5555),
-        (2, 0x3333_3333),
-        (4, 0x0f0f_0f0f),
-        (8, 0x00ff_00ff),
-        (16, 0x0000_ffff),
-    ] {
-        x = x.xor(x.shr(shift).and(U::splat(mask)));
-    }
-    x
+    let x = index;
+    let x = x.xor(x.shr_by::<1>().and(U::splat(0x5555_5555)));
+    let x = x.xor(x.shr_by::<2>().and(U::splat(0x3333_3333)));
+    let x = x.xor(x.shr_by::<4>().and(U::splat(0x0f0f_0f0f)));
+    let x = x.xor(x.shr_by::<8>().and(U::splat(0x00ff_00ff)));
+    x.xor(x.shr_by::<16>().and(U::splat(0x0000_ffff)))
 }
 
 /// The seeds of a dimension: (index shuffle of its set, value scramble of the dimension).
@@ -143,7 +138,7 @@ pub(crate) fn sobol_bits<U: U32Lane>(index: U, dim: u32, seed: u32) -> U {
             let mut value = U::splat(0);
             for column in columns {
                 value = value.xor(bits.top_bit_mask().and(U::splat_from(column)));
-                bits = bits.shl(1);
+                bits = bits.shl_by::<1>();
             }
             value
         }

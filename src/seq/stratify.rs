@@ -46,8 +46,12 @@ pub(crate) fn permute<U: U32Lane>(i: U, n: u32, key: U) -> U {
     // Round keys whose low bits depend on all of `key`: the low k bits of a product depend only on
     // the low k bits of its factors, so the high bits are folded down first.
     let k1 = key;
-    let k2 = key.xor(key.shr(11)).wrapping_mul(U::splat(0x2c1b_3c6d));
-    let k3 = k2.xor(k2.shr(13)).wrapping_mul(U::splat(0x297a_2d39));
+    let k2 = key
+        .xor(key.shr_by::<11>())
+        .wrapping_mul(U::splat(0x2c1b_3c6d));
+    let k3 = k2
+        .xor(k2.shr_by::<13>())
+        .wrapping_mul(U::splat(0x297a_2d39));
     let map = |x: U| {
         let x = x.xor(k1).wrapping_mul(U::splat(0xa136_aaad)).and(w);
         let x = x
@@ -83,8 +87,8 @@ pub(crate) fn permute<U: U32Lane>(i: U, n: u32, key: U) -> U {
 #[inline(always)]
 pub(crate) fn in_stratum<U: U32Lane>(s: U, n: u32, h: U) -> U::F {
     let b = 23 - ceil_log2(n);
-    let jitter = h.shr(1).shr(31 - b);
-    let t = s.shl(b + 1).xor(jitter.shl(1)).xor(U::splat(1));
+    let jitter = h.shr_by::<1>().shr(31 - b);
+    let t = s.shl(b + 1).xor(jitter.shl_by::<1>()).xor(U::splat(1));
     t.ratio(n << (b + 1))
 }
 

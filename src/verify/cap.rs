@@ -98,10 +98,15 @@ impl Cap {
 
     /// Zoomed direction → direction, with the factor hs/2 that turns its pdf into the zoomed pdf.
     pub fn unzoom(&self, wp: DVec3) -> (DVec3, f64) {
-        let t = (1.0 - wp.z) * self.hs / 2.0;
+        self.unzoom_polar(wp.z, wp.y.atan2(wp.x).sin_cos())
+    }
+
+    /// [`unzoom`](Self::unzoom) of the zoomed direction of height `zp` and azimuth φ, given as
+    /// (sin φ, cos φ): a grid over the zoomed sphere reuses one table of azimuths.
+    pub fn unzoom_polar(&self, zp: f64, (sin_phi, cos_phi): (f64, f64)) -> (DVec3, f64) {
+        let t = (1.0 - zp) * self.hs / 2.0;
         let sin = (t * (2.0 - t)).max(0.0).sqrt();
-        let phi = wp.y.atan2(wp.x);
-        let (x, y, z) = (sin * phi.cos(), sin * phi.sin(), 1.0 - t);
+        let (x, y, z) = (sin * cos_phi, sin * sin_phi, 1.0 - t);
         (x * self.t + y * self.b + z * self.axis, self.hs / 2.0)
     }
 

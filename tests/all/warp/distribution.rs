@@ -223,13 +223,14 @@ fn negative_controls_are_rejected() {
 #[test]
 fn every_pdf_integrates_to_one() {
     fn integrate(cap: Cap, pdf: impl Fn(Vec3) -> f32, n: usize) -> f64 {
+        let azimuths: Vec<(f64, f64)> = (0..n)
+            .map(|j| (2.0 * PI * (j as f64 + 0.5) / n as f64).sin_cos())
+            .collect();
         let mut sum = 0.0;
         for i in 0..n {
             let zp = 1.0 - 2.0 * (i as f64 + 0.5) / n as f64;
-            let rp = ((1.0 - zp) * (1.0 + zp)).sqrt();
-            for j in 0..n {
-                let phi = 2.0 * PI * (j as f64 + 0.5) / n as f64;
-                let (w, k) = cap.unzoom(DVec3::new(rp * phi.cos(), rp * phi.sin(), zp));
+            for &phi in &azimuths {
+                let (w, k) = cap.unzoom_polar(zp, phi);
                 sum += pdf(w.as_vec3()) as f64 * k;
             }
         }

@@ -6,6 +6,7 @@
 
 use glam::{Vec2, Vec3};
 use libfuzzer_sys::fuzz_target;
+use mcsample::scene::AnyShape;
 use mcsample::verify::registry::{self, LightSampler, Sampler};
 use mcsample::x8::{Vec2x8, Vec3x8};
 
@@ -40,7 +41,8 @@ fuzz_target!(|data: &[u8]| {
         let param = if matches!(s, Sampler::PhongLobe(_)) { f[3] } else { f[2] };
         // The rectangle's contract asks for orthogonal edges: keep the fuzzed light inside it.
         let geometry = match s {
-            Sampler::SphericalRectangle(_) | Sampler::Light(LightSampler::Rectangle { .. }) => {
+            Sampler::SphericalRectangle(_)
+            | Sampler::Light(LightSampler(AnyShape::Rectangle(_))) => {
                 let [c, ex, ey] = geometry;
                 let ey = ey - ex * (ey.dot(ex) / ex.length_squared());
                 // f32 Gram–Schmidt leaves a rounding residue along ex when ey's part along it is

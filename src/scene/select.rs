@@ -85,7 +85,24 @@ macro_rules! shapes {
             }
         }
 
+        impl PartialEq for AnyShape<Vec3> {
+            fn eq(&self, other: &Self) -> bool {
+                match (self, other) {
+                    $((Self::$name(a), Self::$name(b)) => a == b,)*
+                    #[allow(unreachable_patterns)]
+                    _ => false,
+                }
+            }
+        }
+
         $(
+            impl<V: Point3> From<$shape<V>> for AnyShape<V> {
+                #[inline]
+                fn from(s: $shape<V>) -> Self {
+                    AnyShape::$name(s)
+                }
+            }
+
             impl<V: Point3> From<Emitter<$shape<V>, V>> for Light<V> {
                 #[inline]
                 fn from(l: Emitter<$shape<V>, V>) -> Self {

@@ -19,8 +19,8 @@ use crate::lane::{Lane, Mask, V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::warp::common::clamp_u;
-use crate::warp::polygon::{area_pdf_solid_angle, pow2_scale};
 use crate::warp::polygon::{cross_wide, dot_wide, plane_dot};
+use crate::warp::polygon::{parallelogram_area_pdf, pow2_scale};
 
 /// Below this solid angle (sr) the rectangle is sampled by area.
 ///
@@ -97,10 +97,6 @@ struct Setup<L: Math> {
     cos_psi1: L,
     /// The solid angle by Van Oosterom–Strackee.
     omega: L,
-    /// For the area pdf: the unit normal, the signed distance corner·n̂ and 1/area.
-    n_unit: V3<L>,
-    h_unit: L,
-    inv_area: L,
     /// Unit normals of the planes through the shading point and each edge, pointing inwards.
     planes: [V3<L>; 4],
     /// −INSIDE_SLACK·(1 + R/r): see [`INSIDE_SLACK`].
@@ -443,7 +439,6 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
         | omega.gt(L::c(SPHERICAL_RECTANGLE_MAX_SR as f64))
         | !map_ok
         | skewed;
-    let area = nn.sqrt();
     let beyond_reach =
         !by_area & (exl + eyl).gt(L::c(SPHERICAL_RECTANGLE_INVERSE_REACH as f64) * d);
     Setup {
@@ -469,9 +464,6 @@ fn setup<L: Math>(corner: V3<L>, ex: V3<L>, ey: V3<L>) -> Setup<L> {
         sin_psi1: d / dist1,
         cos_psi1: y1 / dist1,
         omega,
-        n_unit: n.scale(L::ONE / area),
-        h_unit: h / area,
-        inv_area: L::ONE / area,
         planes,
         slack,
         valid,
@@ -662,15 +654,16 @@ impl<P: Point3<Lane = L>, L: Math> SphericalRectangle<P> {
     fn pdf_lanes(&self, w: V3<L>) -> L {
         let s = &self.s;
         let len2 = w.dot(w);
-        let w = w.normalize();
+        let unit = w.normalize();
         let mut inside = len2.gt(L::ZERO) & len2.is_finite();
         for m in s.planes {
-            inside = inside & w.dot(m).ge(s.slack);
+            inside = inside & unit.dot(m).ge(s.slack);
         }
-        // The area pdf, t²/(|cos θ|·A) = d²/(|w·n̂|³·A) for unit w (w·n̂ in f64), only where
-        // some lane samples by area: the branch follows the rectangle, not the point.
+        // The area pdf of `w` as given, only where some lane samples by area: the branch follows
+        // the rectangle, not the point. The scaled geometry gives the same pdf (H²/|n|³ is
+        // scale-free).
         let area = if s.by_area.any() {
-            area_pdf_solid_angle(w, s.h_unit, s.n_unit, s.inv_area)
+            parallelogram_area_pdf(w, s.corner, s.ex, s.ey)
         } else {
             L::ZERO
         };

@@ -11,7 +11,7 @@ use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::warp::common::clamp_u;
 use crate::warp::polygon::{
-    EdgePlanes, area_pdf_from_cos, needs_pow2_scale, pow2_scale, vos_solid_angle,
+    EdgePlanes, needs_pow2_scale, pow2_scale, triangle_area_pdf, vos_solid_angle,
 };
 use crate::warp::polygon::{cross_wide, plane_dot, triangle_terms};
 use crate::warp::triangle::{uniform_triangle, uniform_triangle_inverse};
@@ -423,16 +423,7 @@ impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
         let s = &self.s;
         let sph = L::ONE / s.omega;
         let area = if s.by_area.any() {
-            // w·n from the vertices in f64: with n rounded to f32 first, the pdf of a direction
-            // 1e-5 rad from the plane would be 5 % off.
-            let (a, b, c) = (s.a, s.b, s.c);
-            let wn = plane_dot(
-                [w.x, w.y, w.z],
-                [a.x, a.y, a.z],
-                [b.x, b.y, b.z],
-                [c.x, c.y, c.z],
-            );
-            area_pdf_from_cos(wn, s.h, L::TWO)
+            triangle_area_pdf(w, s.h, [s.a, s.b, s.c])
         } else {
             L::ZERO
         };

@@ -15,6 +15,7 @@
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, TAU};
 
 use glam::Vec2;
+use mcsample::verify::registry::Sampler;
 
 /// 1 − 2⁻²⁴, the largest f32 below 1.
 pub const ONE_MINUS_EPS_F32: f32 = 1.0 - 1.0 / 16_777_216.0;
@@ -796,5 +797,106 @@ pub fn collect(results: impl IntoIterator<Item = Result<(), String>>) -> Result<
             errs[..12].join("\n    "),
             n - 12
         )),
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The registry's warps paired with their references
+
+/// How an inverse's error is measured: as a distance, as the larger coordinate error, or as the
+/// larger with u₁ an azimuth compared on the circle. Near the pole the azimuth of an f32
+/// direction is ill-conditioned in any implementation, so `off_axis_only` compares it only where
+/// the direction is off the axis by more than 1e-3 (then atan2's conditioning costs at most
+/// ~1e-4·ulp-level error).
+#[derive(Clone, Copy)]
+pub enum Metric {
+    Distance,
+    Max,
+    Azimuth { off_axis_only: bool },
+}
+
+/// A registered warp's independent f64 reference from this file, forward and inverse, at the
+/// warp's parameters, with the measure of its inverse's error. The inverse is `None` where an
+/// f32 input alone moves u by more than the bound: a Phong lobe sharper than n = 20, whose u₀
+/// moves by (n + 1)·ulp(cos α) near its axis (3e-5 at n = 500; its round trip is checked in
+/// `warp::roundtrip`).
+pub struct Reference {
+    pub forward: Box<dyn Fn(D2) -> D3>,
+    pub inverse: Option<Box<dyn Fn(D3) -> D2>>,
+    pub metric: Metric,
+}
+
+/// The pairing of the registry's warps with their references; `None` for the samplers whose
+/// references are tested on their own (the spherical polygons, in `warp::accuracy`) or that have
+/// no inverse. A new warp's reference is its functions above and its arm here.
+pub fn reference(s: Sampler) -> Option<Reference> {
+    let r = |forward: Box<dyn Fn(D2) -> D3>, inverse: Box<dyn Fn(D3) -> D2>, metric| {
+        Some(Reference {
+            forward,
+            inverse: Some(inverse),
+            metric,
+        })
+    };
+    let planar = |p: D2| [p[0], p[1], 0.0];
+    let xy = |w: D3| [w[0], w[1]];
+    let azimuth = Metric::Azimuth {
+        off_axis_only: true,
+    };
+    match s {
+        Sampler::ConcentricDisk(_) => r(
+            Box::new(move |u| planar(concentric_disk(u))),
+            Box::new(move |p| concentric_disk_inverse(xy(p))),
+            Metric::Distance,
+        ),
+        Sampler::PolarDisk(_) => r(
+            Box::new(move |u| planar(polar_disk(u))),
+            Box::new(move |p| polar_disk_inverse(xy(p))),
+            Metric::Azimuth {
+                off_axis_only: false,
+            },
+        ),
+        Sampler::UniformHemisphere(_) => r(
+            Box::new(uniform_hemisphere),
+            Box::new(uniform_hemisphere_inverse),
+            azimuth,
+        ),
+        Sampler::CosineHemisphere(_) => r(
+            Box::new(cosine_hemisphere),
+            Box::new(cosine_hemisphere_inverse),
+            Metric::Max,
+        ),
+        Sampler::UniformSphere(_) => r(
+            Box::new(uniform_sphere),
+            Box::new(uniform_sphere_inverse),
+            azimuth,
+        ),
+        Sampler::UniformCone(c) => {
+            let h = c.h as f64;
+            r(
+                Box::new(move |u| uniform_cone(u, h)),
+                Box::new(move |w| uniform_cone_inverse(w, h)),
+                azimuth,
+            )
+        }
+        Sampler::PhongLobe(l) => {
+            let n = l.n as f64;
+            let inverse: Box<dyn Fn(D3) -> D2> = Box::new(move |w| phong_lobe_inverse(w, n));
+            Some(Reference {
+                forward: Box::new(move |u| phong_lobe(u, n)),
+                inverse: (n <= 20.0).then_some(inverse),
+                metric: azimuth,
+            })
+        }
+        Sampler::UniformTriangle(_) => r(
+            Box::new(uniform_triangle),
+            Box::new(uniform_triangle_inverse),
+            Metric::Distance,
+        ),
+        Sampler::Tent(_) => r(
+            Box::new(|u| [tent(u[0]), tent(u[1]), 0.0]),
+            Box::new(|x| [tent_inverse(x[0]), tent_inverse(x[1])]),
+            Metric::Distance,
+        ),
+        _ => None,
     }
 }

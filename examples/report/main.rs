@@ -139,23 +139,16 @@ fn d3(v: Vec3) -> V3<f64> {
     v.as_dvec3().into()
 }
 
-/// One row of the warp table: a sampler of the registry (the same samplers, at the same
-/// parameters, as the tests), timed over the batch with the warp inlined into the loop, its
-/// error against its f64 instance, and its χ² p-value.
-fn measure(cfg: &Config, s: Sampler, pts: &[Vec2], packets: &[Vec2x8], err_pts: &[Vec2]) -> Row {
-    let ours = |us: &[Vec2], out: &mut [Vec3]| s.sample_all(us, out);
-    let (scalar_ns, x8_ns) = time_pair(
-        cfg,
-        pts,
-        packets,
-        &ours,
-        &|us: &[Vec2x8], out: &mut [Vec3x8]| s.sample_all(us, out),
-    );
-    // The ratio to the plain version comes from its own interleaved pair.
-    let scalar_vs_plain = plain::loop_for(s).map(|plain| {
-        let (a, b) = time_pair(cfg, pts, pts, &ours, &*plain);
-        a / b
-    });
+/// A sampler's accuracy: its worst error against its f64 instance over the error points (and
+/// the u where it occurs), its worst pdf error, and its χ² p-value.
+struct Accuracy {
+    max_abs_err: f64,
+    worst_u: Vec2,
+    max_pdf_rel_err: f64,
+    chi2_p: f64,
+}
+
+fn accuracy(cfg: &Config, s: Sampler, err_pts: &[Vec2]) -> Accuracy {
     let mut max_abs_err = 0.0f64;
     let mut worst_u = Vec2::ZERO;
     let mut max_pdf_rel_err = 0.0f64;
@@ -181,7 +174,57 @@ fn measure(cfg: &Config, s: Sampler, pts: &[Vec2], packets: &[Vec2x8], err_pts: 
     }
     let n = if cfg.quick { 200_000 } else { 1_000_000 };
     let us = uniform_points(n, 7);
-    let chi2_p = s.chi_square(n, |i| us[i]).p_value;
+    Accuracy {
+        max_abs_err,
+        worst_u,
+        max_pdf_rel_err,
+        chi2_p: s.chi_square(n, |i| us[i]).p_value,
+    }
+}
+
+/// `f` of every item, on every core: for the work that is not timed.
+fn on_all_cores<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync) -> Vec<R> {
+    use std::sync::Mutex;
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let next = AtomicUsize::new(0);
+    let out: Mutex<Vec<Option<R>>> = Mutex::new(items.iter().map(|_| None).collect());
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    std::thread::scope(|scope| {
+        for _ in 0..threads {
+            scope.spawn(|| {
+                loop {
+                    let i = next.fetch_add(1, Ordering::Relaxed);
+                    let Some(item) = items.get(i) else { break };
+                    let r = f(item);
+                    out.lock().unwrap()[i] = Some(r);
+                }
+            });
+        }
+    });
+    out.into_inner()
+        .unwrap()
+        .into_iter()
+        .map(|r| r.expect("every item is done"))
+        .collect()
+}
+
+/// One row of the warp table: a sampler of the registry (the same samplers, at the same
+/// parameters, as the tests), timed over the batch with the warp inlined into the loop, with its
+/// accuracy.
+fn measure(cfg: &Config, s: Sampler, pts: &[Vec2], packets: &[Vec2x8], acc: Accuracy) -> Row {
+    let ours = |us: &[Vec2], out: &mut [Vec3]| s.sample_all(us, out);
+    let (scalar_ns, x8_ns) = time_pair(
+        cfg,
+        pts,
+        packets,
+        &ours,
+        &|us: &[Vec2x8], out: &mut [Vec3x8]| s.sample_all(us, out),
+    );
+    // The ratio to the plain version comes from its own interleaved pair.
+    let scalar_vs_plain = plain::loop_for(s).map(|plain| {
+        let (a, b) = time_pair(cfg, pts, pts, &ours, &*plain);
+        a / b
+    });
     let first_further_ns = s.scene_light().map(|light| {
         let p = Vec3::ZERO;
         let prepared = light.at(p);
@@ -206,10 +249,10 @@ fn measure(cfg: &Config, s: Sampler, pts: &[Vec2], packets: &[Vec2x8], err_pts: 
         scalar_ns,
         scalar_vs_plain,
         x8_ns,
-        max_abs_err,
-        worst_u,
-        max_pdf_rel_err,
-        chi2_p,
+        max_abs_err: acc.max_abs_err,
+        worst_u: acc.worst_u,
+        max_pdf_rel_err: acc.max_pdf_rel_err,
+        chi2_p: acc.chi2_p,
         first_further_ns,
     }
 }
@@ -380,9 +423,13 @@ fn main() {
         print!("{}", t.text());
         tables.push(t);
     };
-    let rows: Vec<Row> = registry::registry()
+    // The accuracy of every sampler on all the cores first; then the timings, one at a time.
+    let samplers: Vec<Sampler> = registry::registry().into_iter().collect();
+    let accuracies = on_all_cores(&samplers, |&s| accuracy(&cfg, s, &err_pts));
+    let rows: Vec<Row> = samplers
         .into_iter()
-        .map(|s| measure(&cfg, s, &pts, &packets, &err_pts))
+        .zip(accuracies)
+        .map(|(s, acc)| measure(&cfg, s, &pts, &packets, acc))
         .collect();
     show(table::warps(&cfg, &rows));
     show(table::prepared(&rows));

@@ -92,8 +92,10 @@ impl Family for SolidAngleRectangle {
         }
     }
     fn pdf<L: Math>(&self, x: V3<L>) -> L {
+        // The sample is the point on the light; the pdf takes it as it is, so the sample's own
+        // pdf and this one are the same function of the same point.
         let [c, ex, ey] = self.v.map(lanes3::<L>);
-        spherical_rectangle_pdf(x.normalize(), c, ex, ey)
+        spherical_rectangle_pdf(x, c, ex, ey)
     }
     fn inverse<L: Math>(&self, x: V3<L>) -> Option<V2<L>> {
         let [c, ex, ey] = self.v.map(lanes3::<L>);

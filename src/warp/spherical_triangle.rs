@@ -13,7 +13,7 @@ use crate::warp::common::clamp_u;
 use crate::warp::polygon::{
     EdgePlanes, needs_pow2_scale, pow2_scale, triangle_area_pdf, vos_solid_angle,
 };
-use crate::warp::polygon::{cross_wide, plane_dot, triangle_terms};
+use crate::warp::polygon::{plane_dot, triangle_terms, wide_cross};
 use crate::warp::triangle::{uniform_triangle, uniform_triangle_inverse};
 
 /// Below this solid angle (sr) the triangle is sampled by area.
@@ -50,19 +50,16 @@ struct Setup<L: Math> {
     /// The inverse of the power of two the vertices are scaled by.
     unscale: L,
     omega: L,
-    /// δ = α − Ω/2 (positive in every spherical triangle) and π − α, α the interior angle at
-    /// A: the accurate terms of sin(α − E/2) (see `arvo`). π − α is +∞ where α ≤ π/2 in every
-    /// lane, where the map never uses it.
-    delta: L,
-    pi_minus_alpha: L,
-    /// 1 − cos and sin of the arc AB.
-    one_minus_cos_c: L,
-    sin_c: L,
-    /// The unit tangent at A of the arc towards C.
-    t_ac: V3<L>,
-    /// 1 − cos and sin of the arc AC, the farthest Ĉ may go.
-    one_minus_cos_b: L,
-    sin_b: L,
+    /// From each end P ∈ {A, C} of the arc AC: the tangent T̂ towards the other end, and with c the
+    /// arc PB and φ the angle at P, sin c and (1 − cos c)·(sin φ, cos φ).
+    t_a: V3<L>,
+    t_c: V3<L>,
+    sin_ab: L,
+    sin_cb: L,
+    vs_a: L,
+    vc_a: L,
+    vs_c: L,
+    vc_c: L,
     /// True where the triangle can be sampled at all.
     valid: L::Mask,
     /// True where it is sampled by area.
@@ -136,45 +133,23 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     let n = V3::new(nx, ny, nz);
     let omega = L::TWO * triple.abs().atan2(den);
 
-    // The arcs c = AB and b = AC and the angle α at A come from the normals a×b and a×c of the
-    // planes through A, in f64: an f32 cross product of nearly parallel or nearly opposite
-    // vectors keeps few digits of its direction.
-    let wide_cross = |p: V3<L>, q: V3<L>| {
-        let [x, y, z] = cross_wide([p.x, p.y, p.z], [q.x, q.y, q.z]);
-        V3::new(x, y, z)
+    // The edge planes through the origin, from f64 normals: an f32 cross product of nearly
+    // parallel or nearly opposite vectors keeps few digits of its direction.
+    let (nab, nbc, nca) = (wide_cross(pa, pb), wide_cross(pb, pc), wide_cross(pc, pa));
+    let (lab, lbc, lca) = (nab.length(), nbc.length(), nca.length());
+    let mca = nca.scale(L::ONE / lca);
+    // The frames of Arvo's map (see `arvo`). B's height over the arc AC's plane, sin c sin φ, is
+    // det(Â, B̂, Ĉ) / sin AC, from the f64 terms: accurate for a thin triangle. sin c cos φ is
+    // (B̂ − P)·T̂ and 1 − cos c is |B̂ − P|²/2, both accurate for B near P.
+    let height = triple.abs() / (lca / (pla * plc));
+    let frame = |p: V3<L>, t: V3<L>, sin_pb: L| {
+        let d = ub - p;
+        let k = L::HALF * d.dot(d) / sin_pb;
+        (height * k, d.dot(t) * k)
     };
-    let nab = wide_cross(pa, pb);
-    let nac = wide_cross(pa, pc);
-    let nbc = wide_cross(pb, pc);
-    let (lab, lac) = (nab.length(), nac.length());
-    let (sin_c, cos_c) = (lab / (pla * plb), ua.dot(ub));
-    let (sin_b, cos_b) = (lac / (pla * plc), ua.dot(uc));
-    // α as atan2(sin, cos), accurate at every angle (acos is not, near 0 and π). sin α from the
-    // triple product of the unit vertices, â·(b̂ × ĉ) = sin b sin c sin α, which VOS's f64 terms
-    // give accurately, rather than from the cross product of two nearly parallel normals, which
-    // loses α's relative precision when α is small.
-    let (mab, mac) = (nab.scale(L::ONE / lab), nac.scale(L::ONE / lac));
-    let cos_alpha = mab.dot(mac).clamp(L::c(-1.0), L::ONE);
-    let sin_alpha = (triple.abs() / (sin_b * sin_c)).min(L::ONE);
-    let one_minus_cos_c = versine(sin_c, cos_c);
-    let one_minus_cos_b = versine(sin_b, cos_b);
-    // The tangent as (a × c) × a, from the plane's normal: uc − ua(ua·uc) would cancel for
-    // nearly opposite A and C and put Ĉ, and samples on the edge AC, off the edge's plane.
-    let t_ac = nac.cross(ua).normalize();
-    // δ = α − Ω/2 from the half-angle excess formula at E = Ω (see `arvo`):
-    // tan δ = sin α / (cos α + tan(b/2) tan(c/2)), multiplied through by sin b sin c; and π − α
-    // directly, which f32 cannot recover from α near π.
-    let sbc = sin_b * sin_c;
-    let delta = (sin_alpha * sbc).atan2(cos_alpha.mul_add(sbc, one_minus_cos_b * one_minus_cos_c));
-    // The map takes π − α + E/2 only where it is below α − E/2, which needs α > π/2: where no
-    // lane's α is obtuse, +∞ leaves α − E/2 the choice (at α = π/2, E = 0 the two are within
-    // rounding of π/2, whose sine is 1 either way) and saves the arctangent. The branch follows
-    // the triangle, not the sample.
-    let pi_minus_alpha = if cos_alpha.lt(L::ZERO).any() {
-        sin_alpha.atan2(-cos_alpha)
-    } else {
-        L::c(f64::INFINITY)
-    };
+    let (t_a, t_c) = (ua.cross(mca), mca.cross(uc));
+    let (sin_ab, sin_cb) = (lab / (pla * plb), lbc / (plb * plc));
+    let ((vs_a, vc_a), (vs_c, vc_c)) = (frame(ua, t_a, sin_ab), frame(uc, t_c, sin_cb));
 
     // Collinear vertices can leave a rounding-sized normal, and a shading point in the plane a
     // rounding-sized triple product (with FMA, say), while VOS still reports up to 2π. Neither is
@@ -194,21 +169,22 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
         & (h / near).abs().gt(L::c(1e-6) * nn)
         & omega.gt(L::ZERO)
         & omega.is_finite()
-        & delta.is_finite()
         & n.dot(n).is_finite()
         & pla.gt(L::ZERO)
         & plb.gt(L::ZERO)
         & plc.gt(L::ZERO);
     let by_area = omega.lt(L::c(SPHERICAL_TRIANGLE_MIN_SR as f64))
-        | omega.gt(L::c(SPHERICAL_TRIANGLE_MAX_SR as f64))
-        | !delta.is_finite()
-        | sin_alpha.eq(L::ZERO);
+        | omega.gt(L::c(SPHERICAL_TRIANGLE_MAX_SR as f64));
     Setup {
         a,
         b,
         c,
         // The edge planes a × b, b × c, c × a (rotating the labels keeps the winding).
-        edges: EdgePlanes::new([mab, nbc.scale(L::ONE / nbc.length()), -mac], h, omega),
+        edges: EdgePlanes::new(
+            [nab.scale(L::ONE / lab), nbc.scale(L::ONE / lbc), mca],
+            h,
+            omega,
+        ),
         h,
         ua,
         ub,
@@ -216,23 +192,17 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
         n,
         unscale: L::ONE / scale,
         omega,
-        delta,
-        pi_minus_alpha,
-        one_minus_cos_c,
-        sin_c,
-        one_minus_cos_b,
-        sin_b,
-        t_ac,
+        t_a,
+        t_c,
+        sin_ab,
+        sin_cb,
+        vs_a,
+        vc_a,
+        vs_c,
+        vc_c,
         valid,
         by_area,
     }
-}
-
-/// 1 − cos θ of an angle given by its sine and cosine, without the cancellation near θ = 0:
-/// sin²θ / (1 + cos θ) where cos θ ≥ 0.
-#[inline(always)]
-fn versine<L: Math>(sin: L, cos: L) -> L {
-    L::select(cos.ge(L::ZERO), sin * sin / (L::ONE + cos), L::ONE - cos)
 }
 
 /// The component of `v` orthogonal to unit `u`, normalised.
@@ -242,40 +212,29 @@ fn ortho<L: Math>(v: V3<L>, u: V3<L>) -> V3<L> {
     w.scale(L::ONE / w.length())
 }
 
-/// Arvo's map: u₀ picks the sub-triangle A B Ĉ of area E = u₀Ω, u₁ the point along the arc B Ĉ.
+/// Arvo's map: u₀ picks the point Ĉ of the arc AC for which the sub-triangle A B Ĉ has area
+/// E = u₀Ω, u₁ the point along the arc B Ĉ.
 ///
-/// Arvo solves for cos b′, the arc from A to Ĉ, as a ratio and takes sin b′ = √(1 − cos²b′); both
-/// the ratio and the root cancel (a small u₀, or b′ near 90°, loses up to 3e-4 of direction in
-/// f32). The half-angle form of the spherical excess of the triangle with sides c, b′ and angle α
-/// between them, tan(E/2) = τt sin α / (1 + τt cos α) with τ = tan(c/2), t = tan(b′/2), solves
-/// to t = sin(E/2) / (τ sin(α − E/2)). With τ = (1 − cos c)/sin c, b′/2 is the angle of
-/// (x, y) = ((1 − cos c) sin(α − E/2), sin c sin(E/2)): two products of sines, each accurate, and
-/// cos b′, sin b′ follow from x and y without a root.
+/// Ĉ in closed form, after Peters (2021, §5), who finds it by a reflection: in an orthonormal
+/// frame (P, T̂, N̂) at an end P of the arc, with T̂ its tangent towards the other end, Van
+/// Oosterom–Strackee's tan(E/2) for the triangle P B Ĉ is linear in the bisector H = P + Ĉ, so
+/// H's angle from P solves tan = y/x with x = (1 − cos c) sin(φ − E/2) and y = sin c sin(E/2),
+/// c the arc PB and φ the angle at P; Ĉ is at twice that angle, (x² − y², 2xy) / (x² + y²) in
+/// (P, T̂). x is expanded as (1 − cos c)(sin φ cos(E/2) − cos φ sin(E/2)), and φ − E/2 stays at
+/// least φ/2 for E ≤ Ω/2 (every angle exceeds half the excess), so the difference loses at most a
+/// bit or two: P is A with E = u₀Ω for u₀ ≤ ½, and C with the area (1 − u₀)Ω of C B Ĉ above. No
+/// arc or angle is formed, so nothing cancels near 0 or π.
 #[inline(always)]
 fn arvo<L: Math>(s: &Setup<L>, u: V2<L>) -> V3<L> {
-    let half = u.x * s.omega * L::HALF;
-    let (h1, _) = half.sin_cos();
-    // sin(α − E/2) as the sine of a sum of two non-negative angles, never a difference, which
-    // would cancel as E nears Ω with α close to Ω/2, or for α near π: δ + (1 − u₀)Ω/2 = α − E/2
-    // or (π − α) + E/2 = π − (α − E/2), whichever is at most π/2. Near π the sine loses its
-    // relative precision to the argument's rounding (2.8e-5 of it at 3.128 rad: 2.5e-6 of
-    // direction for a 5 sr triangle with an obtuse α at u₀ = 1).
-    let a1 = s.delta + (L::ONE - u.x) * (s.omega * L::HALF);
-    let a2 = s.pi_minus_alpha + half;
-    let (h2, _) = L::select(a1.le(a2), a1, a2).sin_cos();
-    let x = s.one_minus_cos_c * h2.max(L::ZERO);
-    let y = s.sin_c * h1;
-    // Ĉ must not pass C: near u₀ = 1 rounding can carry b′ a few 1e-6 beyond the arc b, and the
-    // sample with it outside the edge BC. tan(b′/2) = y/x against tan(b/2) = (1 − cos b)/sin b.
-    let over = (y * s.sin_b).gt(x * s.one_minus_cos_b);
-    let (x, y) = (
-        L::select(over, s.sin_b, x),
-        L::select(over, s.one_minus_cos_b, y),
-    );
+    let from_a = u.x.le(L::HALF);
+    let e = L::select(from_a, u.x, L::ONE - u.x) * (s.omega * L::HALF);
+    let (sin_e, cos_e) = e.sin_cos();
+    let x = L::select(from_a, s.vs_a, s.vs_c) * cos_e - L::select(from_a, s.vc_a, s.vc_c) * sin_e;
+    let y = L::select(from_a, s.sin_ab, s.sin_cb) * sin_e;
     let r = L::ONE / x.mul_add(x, y * y);
-    let cos_b = ((x - y) * (x + y) * r).clamp(L::c(-1.0), L::ONE);
-    let sin_b = L::TWO * x * y * r;
-    let c_hat = s.ua.scale(cos_b) + s.t_ac.scale(sin_b);
+    let (cos_pc, sin_pc) = ((x - y) * (x + y) * r, L::TWO * x * y * r);
+    let c_hat = V3::select(from_a, s.ua, s.uc).scale(cos_pc)
+        + V3::select(from_a, s.t_a, s.t_c).scale(sin_pc);
     // 1 − Ĉ·B as |Ĉ − B|²/2, so that z keeps its precision when Ĉ is close to B, and 1 + z as
     // (1 − u₁)(1 − Ĉ·B) + |Ĉ + B|²/2, a sum of non-negative terms, so that sin z = √((1−z)(1+z))
     // keeps it when Ĉ is nearly opposite B (2 − (1 − z) would cancel there: 5e-6 of direction
@@ -406,8 +365,16 @@ impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
             zero
         };
         let w = V3::select(s.by_area, w_area, w_sph);
-        // The pdf is the pdf function's, at the very direction returned: equal by construction.
-        let pdf = self.pdf_lanes(w);
+        // The pdf function's. A spherical sample lies within the inside test's slack of the
+        // triangle, so only area samples take the test: a point of a triangle whose vertices
+        // are 10²⁶ apart in distance can round outside its edge planes. (The `spherical` fuzz
+        // target checks pdf(w) against this bit for bit.)
+        let inside = if s.by_area.any() {
+            !s.by_area | s.edges.contains(w)
+        } else {
+            s.valid
+        };
+        let pdf = self.pdf_lanes(w, inside & !w.any_nan());
         let w = V3::select(pdf.gt(L::ZERO), w, V3::new(L::ZERO, L::ZERO, L::ONE));
         (P::from_lanes(w), pdf)
     }
@@ -415,11 +382,13 @@ impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
     /// See [`spherical_triangle_pdf`].
     #[inline]
     pub fn pdf(&self, w: P) -> L {
-        self.pdf_lanes(w.to_lanes())
+        let w = w.to_lanes();
+        self.pdf_lanes(w, self.s.edges.contains(w))
     }
 
+    /// 1/Ω, or the area pdf, where `inside` and the triangle is valid.
     #[inline(always)]
-    fn pdf_lanes(&self, w: V3<L>) -> L {
+    fn pdf_lanes(&self, w: V3<L>, inside: L::Mask) -> L {
         let s = &self.s;
         let sph = L::ONE / s.omega;
         let area = if s.by_area.any() {
@@ -428,7 +397,7 @@ impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
             L::ZERO
         };
         let pdf = L::select(s.by_area, area, sph);
-        L::select(s.valid & s.edges.contains(w), pdf, L::ZERO)
+        L::select(s.valid & inside, pdf, L::ZERO)
     }
 
     /// See [`spherical_triangle_inverse`].

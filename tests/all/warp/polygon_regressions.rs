@@ -281,6 +281,28 @@ fn by_area_inverse_and_sample_of_extreme_triangles() {
     );
 }
 
+/// A triangle whose vertices lie 8e8 to 3e35 away (Ω 8.8e-18 sr, sampled by area): its sample
+/// at u = 0 is the direction of a vertex, which rounds outside the plane of the opposite edge.
+/// The sample must then carry the pdf that `pdf` gives there, 0, not the area pdf.
+#[test]
+fn by_area_sample_outside_its_edge_planes_keeps_the_pdf_functions_value() {
+    let t = SphericalTriangle::new(
+        Vec3::new(1.4244133e25, -3.5456285e24, 2.9907552e35),
+        Vec3::new(2.990763e35, 2.990763e35, 2.990763e35),
+        Vec3::new(781094500.0, 781094500.0, 781094500.0),
+    );
+    assert!(t.by_area());
+    for u in [
+        Vec2::ZERO,
+        Vec2::new(8.9109e-41, 0.0),
+        Vec2::new(0.5, 0.5),
+        Vec2::ONE,
+    ] {
+        let (w, pdf) = t.sample(u);
+        assert_eq!(t.pdf(w).to_bits(), pdf.to_bits(), "u {u}: w {w}");
+    }
+}
+
 /// A shading point on a rectangle's own corner (3.5e-38 from its plane), described from the
 /// far corner 32 away: the f64 plane offset from there is ~1e-15 of rounding, and the light got
 /// Ω = π. It is edge-on (Ω 0) from both corners. And the inverse's reach: a rectangle 2e8 times

@@ -9,12 +9,18 @@
 //!   forms, and rand_distr's `UnitDisc`, `UnitCircle` and `UnitSphere` (rejection and
 //!   Marsaglia's method) with the same `Pcg32`;
 //! - with `--features rand`, the same through `mcsample::distr` (`rng.sample(UnitDisk)`);
-//! - the copy kernel that moves the same bytes (2 floats in, 3 out).
+//! - the copy kernel that moves the same bytes (2 floats in, 3 out);
+//! - the spherical triangle and rectangle set up for every sample, on 4096 configurations of 0.05
+//!   to 2 sr ("polygons"): ours scalar and x8, the textbook versions of `plain.rs` and ports of
+//!   pbrt-v4's (`peers/pbrt.rs`), once with the geometry varying from sample to sample and once
+//!   with one geometry passed through `black_box` for every sample.
 //!
 //! `cargo bench --bench peers`; for the AVX2 build,
 //! `RUSTFLAGS="-C target-feature=+avx2,+fma" cargo bench --target-dir target/avx2 --bench peers`.
 
 mod common;
+#[path = "peers/pbrt.rs"]
+mod pbrt;
 #[path = "../examples/report/plain.rs"]
 mod plain;
 
@@ -24,7 +30,7 @@ use criterion::measurement::WallTime;
 use criterion::{
     BenchmarkGroup, BenchmarkId, Criterion, Throughput, criterion_group, criterion_main,
 };
-use glam::{Vec2, Vec3};
+use glam::{DVec3, Vec2, Vec3};
 use mcsample::rng::Pcg32x8;
 use mcsample::verify::registry::{self, Sampler};
 use mcsample::warp::{
@@ -295,5 +301,175 @@ fn tent_1d(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, warps, tent_1d, random_points);
+/// A uniform f64 in [0, 1).
+fn uniform(rng: &mut Pcg32) -> f64 {
+    (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+}
+
+/// A unit vector uniform on the sphere.
+fn random_unit(rng: &mut Pcg32) -> DVec3 {
+    let z: f64 = 2.0 * uniform(rng) - 1.0;
+    let phi = std::f64::consts::TAU * uniform(rng);
+    let r = (1.0 - z * z).max(0.0).sqrt();
+    DVec3::new(r * phi.cos(), r * phi.sin(), z)
+}
+
+/// `N` triangles and `N` parallelograms (as corner and two edges) seen from the origin with a
+/// solid angle from 0.05 to 2 sr (in f64): centred in a random direction 1 to 3 away, edges up
+/// to 2.5 long, the plane tilted up to 80° from facing the origin.
+#[allow(clippy::type_complexity)]
+fn general_polygons() -> (Vec<[Vec3; 3]>, Vec<[Vec3; 3]>) {
+    let mut rng = Pcg32::new(0x5eed, 29);
+    let (mut tris, mut rects) = (Vec::with_capacity(N), Vec::with_capacity(N));
+    while tris.len() < N || rects.len() < N {
+        let dir = random_unit(&mut rng);
+        let centre = dir * (1.0 + 2.0 * uniform(&mut rng));
+        let normal = loop {
+            let n = random_unit(&mut rng);
+            if n.dot(-dir) > 80f64.to_radians().cos() {
+                break n;
+            }
+        };
+        let (t, b) = normal.any_orthonormal_pair();
+        let mut edge = || (t * (uniform(&mut rng) - 0.5) + b * (uniform(&mut rng) - 0.5)) * 5.0;
+        let (p, q, r) = (centre + edge(), centre + edge(), centre + edge());
+        let in_class = |omega: f64| (0.05..=2.0).contains(&omega);
+        let tri = [p.as_vec3(), q.as_vec3(), r.as_vec3()];
+        let t64 = SphericalTriangle::<DVec3>::new(p, q, r);
+        if tris.len() < N && !t64.by_area() && in_class(t64.solid_angle()) {
+            tris.push(tri);
+        }
+        // A rectangle (orthogonal edges: a skewed parallelogram is sampled by area) turned by a
+        // random angle in the plane.
+        let turn = std::f64::consts::TAU * uniform(&mut rng);
+        let (x, y) = (
+            t * turn.cos() + b * turn.sin(),
+            b * turn.cos() - t * turn.sin(),
+        );
+        let (ex, ey) = (
+            x * (0.1 + 2.4 * uniform(&mut rng)),
+            y * (0.1 + 2.4 * uniform(&mut rng)),
+        );
+        let corner = centre - (ex + ey) * 0.5;
+        let r64 = SphericalRectangle::<DVec3>::new(corner, ex, ey);
+        if rects.len() < N && !r64.by_area() && in_class(r64.solid_angle()) {
+            rects.push([corner.as_vec3(), ex.as_vec3(), ey.as_vec3()]);
+        }
+    }
+    (tris, rects)
+}
+
+/// One entry of `polygons`: `f` over the points, each with its own configuration (`varying`) or
+/// each with `cfg[0]` passed through `black_box`. Generic, so that `f` is inlined into the loop
+/// as a caller's sampler would be.
+fn polygon_entry<U: Copy, T: Copy, O>(
+    g: &mut BenchmarkGroup<'_, WallTime>,
+    name: &str,
+    (us, cfg, out): (&[U], &[T], &mut [O]),
+    varying: bool,
+    f: impl Fn(U, T) -> O,
+) {
+    let one = cfg[0];
+    g.bench_function(name, |b| {
+        b.iter(|| {
+            if varying {
+                for ((o, &u), &v) in out.iter_mut().zip(black_box(us)).zip(black_box(cfg)) {
+                    *o = f(u, v);
+                }
+            } else {
+                for (o, &u) in out.iter_mut().zip(black_box(us)) {
+                    *o = f(u, black_box(one));
+                }
+            }
+            black_box(&*out);
+        })
+    });
+}
+
+/// The spherical polygons set up for every sample, ours beside the textbook and pbrt-v4, on
+/// geometry varying from sample to sample and on one geometry opaque to the compiler.
+fn polygons(c: &mut Criterion) {
+    let (pts, packets, _) = points();
+    let (tris, rects) = general_polygons();
+    let mut out = vec![Vec3::ZERO; N];
+    let mut out8 = vec![Vec3x8::splat(Vec3::ZERO); N / 8];
+    let pack = |cfg: &[[Vec3; 3]]| -> Vec<[Vec3x8; 3]> {
+        cfg.chunks(8)
+            .map(|c| {
+                [0, 1, 2].map(|k| Vec3x8::from(core::array::from_fn::<Vec3, 8, _>(|i| c[i][k])))
+            })
+            .collect()
+    };
+    let (tris8, rects8) = (pack(&tris), pack(&rects));
+    for varying in [true, false] {
+        let kind = if varying { "varying" } else { "fixed" };
+        let mut g = c.benchmark_group(format!("peers/spherical triangle {kind}"));
+        g.throughput(Throughput::Elements(N as u64));
+        let (p, t) = (&pts[..], &tris[..]);
+        polygon_entry(
+            &mut g,
+            "ours scalar",
+            (p, t, &mut out),
+            varying,
+            |u, [a, b, c]| mcsample::warp::spherical_triangle(u, a, b, c).0,
+        );
+        polygon_entry(
+            &mut g,
+            "textbook",
+            (p, t, &mut out),
+            varying,
+            |u, [a, b, c]| plain::spherical_triangle(u, a, b, c).0,
+        );
+        polygon_entry(
+            &mut g,
+            "pbrt-v4",
+            (p, t, &mut out),
+            varying,
+            |u: Vec2, [a, b, c]| pbrt::spherical_triangle(u.into(), a, b, c).0,
+        );
+        polygon_entry(
+            &mut g,
+            "ours x8",
+            (&packets, &tris8, &mut out8),
+            varying,
+            |u, [a, b, c]| mcsample::warp::spherical_triangle(u, a, b, c).0,
+        );
+        g.finish();
+
+        let mut g = c.benchmark_group(format!("peers/spherical rectangle {kind}"));
+        g.throughput(Throughput::Elements(N as u64));
+        let r = &rects[..];
+        polygon_entry(
+            &mut g,
+            "ours scalar",
+            (p, r, &mut out),
+            varying,
+            |u, [c0, x, y]| mcsample::warp::spherical_rectangle(u, c0, x, y).0,
+        );
+        polygon_entry(
+            &mut g,
+            "textbook",
+            (p, r, &mut out),
+            varying,
+            |u, [c0, x, y]| plain::spherical_rectangle(u, c0, x, y).0,
+        );
+        polygon_entry(
+            &mut g,
+            "pbrt-v4",
+            (p, r, &mut out),
+            varying,
+            |u: Vec2, [c0, x, y]| pbrt::spherical_rectangle(u.into(), c0, x, y).0,
+        );
+        polygon_entry(
+            &mut g,
+            "ours x8",
+            (&packets, &rects8, &mut out8),
+            varying,
+            |u, [c0, x, y]| mcsample::warp::spherical_rectangle(u, c0, x, y).0,
+        );
+        g.finish();
+    }
+}
+
+criterion_group!(benches, warps, polygons, tent_1d, random_points);
 criterion_main!(benches);

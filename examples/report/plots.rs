@@ -6,7 +6,9 @@
 //!   strategies in two cells of the lecture's grid, one where light sampling wins and one where
 //!   BSDF sampling does, at N = 2…128 samples per estimate;
 //! - `warps_speed_error.svg`: x8 ns per sample against the worst error against the f64 instance,
-//!   for every warp and light of the registry.
+//!   for every warp and light of the registry;
+//! - `polygons_speed_error.svg`: the same for the spherical polygons, scalar and x8, beside their
+//!   textbook versions (scalar ns from the `vs plain` pair, error against the same f64 instance).
 
 use std::path::Path;
 use std::time::Instant;
@@ -93,6 +95,7 @@ fn lines(
         .border_style(BLACK)
         .draw()?;
     root.present()?;
+
     Ok(())
 }
 
@@ -183,5 +186,35 @@ pub fn write(
             + Text::new(r.name.clone(), (5, -10), ("sans-serif", 10))
     }))?;
     root.present()?;
+
+    // The polygons beside their textbook versions: what the robust set-up's time buys.
+    let mut points: Vec<(String, f64, f64, RGBColor)> = Vec::new();
+    for r in rows {
+        if let (Some(vs), Some(plain_err)) = (r.scalar_vs_plain, r.plain_max_abs_err) {
+            let err = r.max_abs_err.max(floor);
+            points.push((format!("{} scalar", r.name), r.scalar_ns, err, BLUE));
+            points.push((format!("{} x8", r.name), r.x8_ns, err, BLUE));
+            let textbook = (r.scalar_ns / vs, plain_err.max(floor));
+            points.push((format!("{} textbook", r.name), textbook.0, textbook.1, RED));
+        }
+    }
+    if !points.is_empty() {
+        let path = dir.join("polygons_speed_error.svg");
+        let root = SVGBackend::new(&path, (900, 640)).into_drawing_area();
+        let xs = log_range(points.iter().map(|p| p.1));
+        let ys = log_range(points.iter().map(|p| p.2));
+        let mut chart = log_chart(
+            &root,
+            "Spherical polygons: ns per sample against worst error vs f64 (red: textbook)",
+            (xs, "ns per sample (scalar, or x8 per lane)"),
+            (ys, "max abs error (1e-9 = exact)"),
+        )?;
+        chart.draw_series(points.iter().map(|(name, x, y, colour)| {
+            EmptyElement::at((*x, *y))
+                + Circle::new((0, 0), 3, colour.filled())
+                + Text::new(name.clone(), (5, -10), ("sans-serif", 10))
+        }))?;
+        root.present()?;
+    }
     Ok(())
 }

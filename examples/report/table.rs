@@ -114,7 +114,8 @@ pub fn warps(cfg: &Config, rows: &[Row]) -> Table {
          formula (`examples/report/plain.rs`), timed as its own interleaved pair.\n\
          Errors: the worst over {random} random u, a {grid}² grid and the square's edges and \
          branch lines, against the f64 instance of the same generic code (`worst u` is where); \
-         pdf errors where both instances are inside the support.\n\
+         plain err: the plain version's, against the same f64 instance, where it computes the same \
+         map (the spherical polygons); pdf errors where both instances are inside the support.\n\
          χ² p: Mitsuba's test on {chi2} samples; the Šidák level for α = 0.01 over these {tests} \
          tests is {:.1e}.",
         sidak(tests)
@@ -126,6 +127,7 @@ pub fn warps(cfg: &Config, rows: &[Row]) -> Table {
         "x8 ns",
         "speedup",
         "max abs err",
+        "plain err",
         "worst u",
         "pdf rel err",
         "χ² p",
@@ -139,6 +141,8 @@ pub fn warps(cfg: &Config, rows: &[Row]) -> Table {
             format!("{:.2}", r.x8_ns),
             ratio(r.scalar_ns, r.x8_ns),
             format!("{:.2e}", r.max_abs_err),
+            r.plain_max_abs_err
+                .map_or("–".into(), |e| format!("{e:.2e}")),
             format!("({:.7}, {:.7})", r.worst_u.x, r.worst_u.y),
             format!("{:.2e}", r.max_pdf_rel_err),
             format!("{:.4}", r.chi2_p),

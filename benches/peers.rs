@@ -13,7 +13,9 @@
 //! - the spherical triangle and rectangle set up for every sample, on 4096 configurations of 0.05
 //!   to 2 sr ("polygons"): ours scalar and x8, the textbook versions of `plain.rs` and ports of
 //!   pbrt-v4's (`peers/pbrt.rs`), once with the geometry varying from sample to sample and once
-//!   with one geometry passed through `black_box` for every sample.
+//!   with one geometry passed through `black_box` for every sample;
+//! - the simple warps in a caller's `#[inline(never)]` loop over structure-of-arrays slices
+//!   (`u1`, `u2` in; `x`, `y`, `z` out), ours beside the plain version ("soa").
 //!
 //! `cargo bench --bench peers`; for the AVX2 build,
 //! `RUSTFLAGS="-C target-feature=+avx2,+fma" cargo bench --target-dir target/avx2 --bench peers`.
@@ -471,5 +473,81 @@ fn polygons(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, warps, polygons, tent_1d, random_points);
+/// A caller's loop over structure-of-arrays slices, kept out of line as a renderer's own kernel
+/// would be, with the warp inlined into it. Indexed as such loops are written, bounds checks
+/// and all.
+#[inline(never)]
+fn soa_loop(
+    f: impl Fn(Vec2) -> Vec3,
+    u1: &[f32],
+    u2: &[f32],
+    (x, y, z): (&mut [f32], &mut [f32], &mut [f32]),
+) {
+    for i in 0..u1.len() {
+        let w = f(Vec2::new(u1[i], u2[i]));
+        x[i] = w.x;
+        y[i] = w.y;
+        z[i] = w.z;
+    }
+}
+
+/// The simple warps in `soa_loop`: ours against the plain version, one group each.
+fn soa(c: &mut Criterion) {
+    let (pts, _, _) = points();
+    let u1: Vec<f32> = pts.iter().map(|p| p.x).collect();
+    let u2: Vec<f32> = pts.iter().map(|p| p.y).collect();
+    let (mut x, mut y, mut z) = (vec![0.0f32; N], vec![0.0f32; N], vec![0.0f32; N]);
+    let h = 0.5;
+    macro_rules! pair {
+        ($name:literal, $ours:expr, $plain:expr) => {{
+            let mut g = c.benchmark_group(concat!("peers/soa ", $name));
+            g.throughput(Throughput::Elements(N as u64));
+            g.bench_function("ours scalar", |b| {
+                b.iter(|| {
+                    soa_loop(
+                        $ours,
+                        black_box(&u1),
+                        black_box(&u2),
+                        (&mut x, &mut y, &mut z),
+                    );
+                    black_box((&x, &y, &z));
+                })
+            });
+            g.bench_function("plain glam", |b| {
+                b.iter(|| {
+                    soa_loop(
+                        $plain,
+                        black_box(&u1),
+                        black_box(&u2),
+                        (&mut x, &mut y, &mut z),
+                    );
+                    black_box((&x, &y, &z));
+                })
+            });
+            g.finish();
+        }};
+    }
+    pair!(
+        "concentric_disk",
+        |u| mcsample::warp::concentric_disk(u).extend(0.0),
+        |u| plain::concentric_disk(u).extend(0.0)
+    );
+    pair!(
+        "cosine_hemisphere",
+        mcsample::warp::cosine_hemisphere,
+        plain::cosine_hemisphere
+    );
+    pair!(
+        "uniform_sphere",
+        mcsample::warp::uniform_sphere,
+        plain::uniform_sphere
+    );
+    pair!(
+        "uniform_cone",
+        |u| mcsample::warp::uniform_cone(u, h),
+        |u| plain::uniform_cone(u, h)
+    );
+}
+
+criterion_group!(benches, warps, polygons, soa, tent_1d, random_points);
 criterion_main!(benches);

@@ -68,9 +68,8 @@ pub trait U32Lane:
     /// (⌊self/d⌋, self mod d), lane-wise, for d ≥ 1: the hardware divide in scalar code, a
     /// multiply by a precomputed reciprocal in packets (exact in both, so the results agree).
     fn div_rem(self, d: u32) -> (Self, Self);
-    /// A constant from a table of the constant repeated 8 times: a packet loads it whole (one
-    /// memory operand), where splatting a scalar would take a load and a broadcast.
-    fn splat_from(repeated: &[u32; 8]) -> Self;
+    /// `f` of each lane: for table lookups, which packets cannot do in their registers.
+    fn map(self, f: impl Fn(u32) -> u32) -> Self;
     /// The high word of the 64-bit product `a · b`.
     fn mul_hi(self, b: Self) -> Self;
     /// All ones where `self > b` (unsigned), zero elsewhere.
@@ -115,7 +114,7 @@ impl U32Lane for u32 {
             #[allow(clippy::integer_division)]
             (self / d, self % d)
         }
-        fn splat_from(repeated: &[u32; 8]) -> Self { repeated[0] }
+        fn map(self, f: impl Fn(u32) -> u32) -> Self { f(self) }
         fn mul_hi(self, b: Self) -> Self { ((self as u64 * b as u64) >> 32) as u32 }
         fn gt_mask(self, b: Self) -> Self { 0u32.wrapping_sub((self > b) as u32) }
         fn top_bit_mask(self) -> Self { ((self as i32) >> 31) as u32 }
@@ -151,7 +150,7 @@ impl U32Lane for U32x8 {
         fn wrapping_sub(self, b: Self) -> Self { self - b }
         fn wrapping_mul(self, b: Self) -> Self { mul_x8(self, b) }
         fn div_rem(self, d: u32) -> (Self, Self) { Divisor::new(d).div_rem(self) }
-        fn splat_from(repeated: &[u32; 8]) -> Self { U32x8::new(*repeated) }
+        fn map(self, f: impl Fn(u32) -> u32) -> Self { U32x8::new(self.to_array().map(f)) }
         fn mul_hi(self, b: Self) -> Self { self.mul_keep_high(b) }
         fn gt_mask(self, b: Self) -> Self { self.simd_gt(b) }
         fn top_bit_mask(self) -> Self { imm::sar31(self) }

@@ -19,7 +19,8 @@
 //! construction with his constants, all `x ^= x·c` with c even so each step is invertible).
 //! The whole pipeline is kept in reversed order so that only one reversal is needed per
 //! scramble: the matrix columns are stored bit-reversed and indexed from the top bit. Dimensions
-//! 0 and 1 (van der Corput and Pascal) need no matrix loop at all; 2 and 3 take 32 column steps.
+//! 0 and 1 (van der Corput and Pascal) need no matrix at all; 2 and 3 take four lookups in byte
+//! tables of their columns' xors (8 KB in all).
 
 use super::hash::lowbias32;
 use crate::lane::{U32Lane, V2};
@@ -63,29 +64,52 @@ const fn direction_numbers(s: u32, a: u32, init: [u32; 3]) -> [u32; 32] {
     v
 }
 
-/// The generator matrices of dimensions 2 and 3 (Joe–Kuo's 3 and 4) in the form the hot loop
-/// wants: column p is the bit-reversed direction number v_{p+1}, the contribution of index bit p,
-/// which the loop reads as bit 31 − p of the bit-reversed index, walking it from the top. Each
-/// column is repeated 8 times so that a packet reads it as one memory operand. Dimension 1 needs
-/// no table (see [`pascal`]).
+/// The generator matrices of dimensions 2 and 3 (Joe–Kuo's 3 and 4) as byte tables. Column p of
+/// a matrix is the bit-reversed direction number v_{p+1}, the contribution of index bit p, which
+/// is bit 31 − p of the bit-reversed index. Entry b of table j is the xor of the columns of the
+/// bits of byte j of that index (bits 31 − 8j down to 24 − 8j, bit 7 − i of b being column
+/// 8j + i): four lookups instead of 32 column steps. Dimension 1 needs no table (see [`pascal`]).
 // Evaluated into constants only: an index out of range there is a compile error, not a
 // run-time panic, and the loop bounds keep every index in range.
 #[allow(clippy::indexing_slicing)]
-static COLUMNS: [[[u32; 8]; 32]; 2] = {
-    let mut out = [[[0u32; 8]; 32]; 2];
+static TABLES: [[[u32; 256]; 4]; 2] = {
+    let mut out = [[[0u32; 256]; 4]; 2];
     let mut d = 0;
     while d < 2 {
         let (s, a, init) = JOE_KUO[d + 1];
         let v = direction_numbers(s, a, init);
-        let mut p = 0;
-        while p < 32 {
-            out[d][p] = [v[p].reverse_bits(); 8];
-            p += 1;
+        let mut j = 0;
+        while j < 4 {
+            let mut b = 0;
+            while b < 256 {
+                let mut i = 0;
+                while i < 8 {
+                    if (b >> (7 - i)) & 1 == 1 {
+                        out[d][j][b] ^= v[8 * j + i].reverse_bits();
+                    }
+                    i += 1;
+                }
+                b += 1;
+            }
+            j += 1;
         }
         d += 1;
     }
     out
 };
+
+/// The GF(2) product of a generator matrix (as its byte tables) and a bit-reversed index.
+#[inline(always)]
+fn matrix_product(tables: &[[u32; 256]; 4], reversed_index: u32) -> u32 {
+    let [t0, t1, t2, t3] = tables;
+    // The mask keeps every index below 256, so the lookups cannot miss.
+    let at = |t: &[u32; 256], shift: u32| {
+        t.get(((reversed_index >> shift) & 0xff) as usize)
+            .copied()
+            .unwrap_or(0)
+    };
+    at(t0, 24) ^ at(t1, 16) ^ at(t2, 8) ^ at(t3, 0)
+}
 
 /// Burley's hash in reversed-bit order: a nested uniform scramble of the bit-reversed value.
 #[inline(always)]
@@ -131,16 +155,11 @@ pub(crate) fn sobol_bits<U: U32Lane>(index: U, dim: u32, seed: u32) -> U {
         // Dimension 0 is the van der Corput sequence: the reversed value is the index itself.
         0 => reversed_index.reverse_bits(),
         1 => pascal(reversed_index.reverse_bits()),
+        // Packets have no gather: they look the tables up lane by lane.
         d => {
-            let [columns2, columns3] = &COLUMNS;
-            let columns = if d == 2 { columns2 } else { columns3 };
-            let mut bits = reversed_index;
-            let mut value = U::splat(0);
-            for column in columns {
-                value = value.xor(bits.top_bit_mask().and(U::splat_from(column)));
-                bits = bits.shl_by::<1>();
-            }
-            value
+            let [tables2, tables3] = &TABLES;
+            let tables = if d == 2 { tables2 } else { tables3 };
+            reversed_index.map(|x| matrix_product(tables, x))
         }
     };
     scramble_reversed(reversed_value, value_seed).reverse_bits()

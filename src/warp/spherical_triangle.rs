@@ -137,19 +137,24 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
     // parallel or nearly opposite vectors keeps few digits of its direction.
     let (nab, nbc, nca) = (wide_cross(pa, pb), wide_cross(pb, pc), wide_cross(pc, pa));
     let (lab, lbc, lca) = (nab.length(), nbc.length(), nca.length());
-    let mca = nca.scale(L::ONE / lca);
-    // The frames of Arvo's map (see `arvo`). B's height over the arc AC's plane, sin c sin φ, is
-    // det(Â, B̂, Ĉ) / sin AC, from the f64 terms: accurate for a thin triangle. sin c cos φ is
-    // (B̂ − P)·T̂ and 1 − cos c is |B̂ − P|²/2, both accurate for B near P.
+    let (mab, mbc, mca) = (
+        nab.scale(L::ONE / lab),
+        nbc.scale(L::ONE / lbc),
+        nca.scale(L::ONE / lca),
+    );
+    // The frames of Arvo's map (see `arvo`), every term from the f64 normals and the VOS
+    // numerator rather than from differences of f32 unit vectors, which lose ε over the arc:
+    // sin c from |P × B|, 1 − cos c from it (`versine`), sin φ as det(Â, B̂, Ĉ) / (sin c sin AC),
+    // cos φ as the dot product of the normals of the two arcs at P.
     let height = triple.abs() / (lca / (pla * plc));
-    let frame = |p: V3<L>, t: V3<L>, sin_pb: L| {
-        let d = ub - p;
-        let k = L::HALF * d.dot(d) / sin_pb;
-        (height * k, d.dot(t) * k)
+    let frame = |cos_pb: L, sin_pb: L, cos_phi: L| {
+        let vers = versine(sin_pb, cos_pb);
+        (height * (vers / sin_pb), vers * cos_phi)
     };
     let (t_a, t_c) = (ua.cross(mca), mca.cross(uc));
     let (sin_ab, sin_cb) = (lab / (pla * plb), lbc / (plb * plc));
-    let ((vs_a, vc_a), (vs_c, vc_c)) = (frame(ua, t_a, sin_ab), frame(uc, t_c, sin_cb));
+    let (vs_a, vc_a) = frame(ub.dot(ua), sin_ab, -mab.dot(mca));
+    let (vs_c, vc_c) = frame(ub.dot(uc), sin_cb, -mbc.dot(mca));
 
     // Collinear vertices can leave a rounding-sized normal, and a shading point in the plane a
     // rounding-sized triple product (with FMA, say), while VOS still reports up to 2π. Neither is
@@ -180,11 +185,7 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
         b,
         c,
         // The edge planes a × b, b × c, c × a (rotating the labels keeps the winding).
-        edges: EdgePlanes::new(
-            [nab.scale(L::ONE / lab), nbc.scale(L::ONE / lbc), mca],
-            h,
-            omega,
-        ),
+        edges: EdgePlanes::new([mab, mbc, mca], h, omega),
         h,
         ua,
         ub,
@@ -203,6 +204,13 @@ fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
         valid,
         by_area,
     }
+}
+
+/// 1 − cos θ of an angle given by its sine and cosine, without the cancellation near θ = 0:
+/// sin²θ / (1 + cos θ) where cos θ ≥ 0.
+#[inline(always)]
+fn versine<L: Math>(sin: L, cos: L) -> L {
+    L::select(cos.ge(L::ZERO), sin * sin / (L::ONE + cos), L::ONE - cos)
 }
 
 /// The component of `v` orthogonal to unit `u`, normalised.

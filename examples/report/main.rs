@@ -1,6 +1,6 @@
 //! The main job: speed against error for every warp and every sequence generator.
 //!
-//! `cargo run --release -p report` prints, per warp, the scalar and x8 time per sample on
+//! `cargo run --release --example report` prints, per warp, the scalar and x8 time per sample on
 //! in-cache points (medians of repeated runs, the two forms interleaved so that their ratio comes
 //! from one run), the scalar time over the plain glam+std version's (`plain.rs`), the speedup, the worst error against the f64 instance of the same generic code,
 //! the worst pdf error, and the χ² p-value of 10⁶ samples. Then, per sequence generator, scalar

@@ -12,10 +12,10 @@
 //!
 //! | floor | module | role | may import |
 //! |---|---|---|---|
-//! | 1 | [`lane`] | the [`Lane`](lane::Lane) traits (arithmetic, masks, selects, bits) over `f32`, [`F32x8`](x8::F32x8) and `f64`, the integer lane [`U32Lane`](lane::U32Lane), and the generic vectors [`V2`](lane::V2), [`V3`](lane::V3) | — |
+//! | 1 | [`lane`] | the [`Lane`](lane::Lane) traits (arithmetic, masks, selects, bits) over `f32`, [`F32x8`](x8::F32x8), [`F32x16`](x16::F32x16) and `f64`, the integer lane [`U32Lane`](lane::U32Lane), and the generic vectors [`V2`](lane::V2), [`V3`](lane::V3) | — |
 //! | 2 | [`math`] | [`Math`](math::Math): the crate's own transcendental functions, with their ulp bounds, and libm for f64 | lane |
 //! | 2 | [`point`] | [`Point2`](point::Point2), [`Point3`](point::Point3): the argument type that picks a call's width | lane, math |
-//! | 2 | [`x8`] | the public packet types | lane |
+//! | 2 | [`x8`], [`x16`] | the public packet types of each width | lane |
 //! | 2 | [`rng`] | `Pcg32x8`: eight PCG32 streams, lane *i* equal to `rand_pcg::Pcg32` | lane |
 //! | 3 | [`seq`] | stateless generators of (index, dimension, seed), the estimators' sample sources, and point-set quality measures | lane, rng |
 //! | 3 | [`frame`] | orthonormal frames from a normal | lane, math, point |
@@ -92,6 +92,7 @@ pub mod rng;
 pub mod scene;
 pub mod seq;
 pub mod warp;
+pub mod x16;
 pub mod x8;
 
 // The test layer: std, and free to index and to panic (its failures are test failures).

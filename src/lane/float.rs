@@ -1,9 +1,10 @@
-//! Float lanes: [`Lane`] for `f32`, [`F32x8`] and the `f64` reference.
+//! Float lanes: [`Lane`] for `f32`, [`F32x8`], [`F32x16`] and the `f64` reference, and the f64
+//! packets [`F64x8`] and [`F64x16`] that the f32 packets widen to.
 
 use core::fmt::Debug;
 use core::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
 
-use wide::u32x8;
+use wide::{bytemuck, u32x8, u32x16};
 
 /// Eight f32 lanes (`wide::f32x8`): the packet lane. Masks are `F32x8` values with all bits set
 /// or clear. Re-exported as [`crate::x8::F32x8`].
@@ -13,6 +14,86 @@ pub type F32x8 = wide::f32x8;
 /// the RIS reservoir), which sum in f64 as the scalar accumulators do, lane by lane with the same
 /// operations. Masks are `F64x8` values with all bits set or clear.
 pub type F64x8 = wide::f64x8;
+
+/// Sixteen f32 lanes (`wide::f32x16`): one AVX-512 register, or two [`F32x8`] halves where the
+/// build has no AVX-512, which `wide` runs one after the other. Masks are `F32x16` values with
+/// all bits set or clear. Re-exported as [`crate::x16::F32x16`].
+pub type F32x16 = wide::f32x16;
+
+/// Sixteen f64 lanes, as two [`F64x8`] halves (lanes 0–7 and 8–15): the f64 lane of
+/// [`F32x16`]'s width, for its accumulators and the set-up terms computed in f64. Every
+/// operation is [`F64x8`]'s on each half, so a lane's value is the same as in the eight-wide
+/// packet. Masks are `F64x16` values with all bits set or clear.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct F64x16 {
+    /// Lanes 0–7.
+    pub lo: F64x8,
+    /// Lanes 8–15.
+    pub hi: F64x8,
+}
+
+/// `F64x16`'s operators, each half by F64x8's.
+macro_rules! halves_op {
+    ($($tr:ident $f:ident),*) => {$(
+        impl $tr for F64x16 {
+            type Output = F64x16;
+            #[inline(always)]
+            fn $f(self, o: F64x16) -> F64x16 {
+                F64x16 { lo: $tr::$f(self.lo, o.lo), hi: $tr::$f(self.hi, o.hi) }
+            }
+        }
+    )*};
+}
+halves_op!(Add add, Sub sub, Mul mul, Div div, BitAnd bitand, BitOr bitor);
+
+impl Neg for F64x16 {
+    type Output = F64x16;
+    #[inline(always)]
+    fn neg(self) -> F64x16 {
+        F64x16 {
+            lo: -self.lo,
+            hi: -self.hi,
+        }
+    }
+}
+
+impl Not for F64x16 {
+    type Output = F64x16;
+    #[inline(always)]
+    fn not(self) -> F64x16 {
+        F64x16 {
+            lo: !self.lo,
+            hi: !self.hi,
+        }
+    }
+}
+
+impl F64x16 {
+    /// `f` on each half.
+    #[inline(always)]
+    fn each(self, f: impl Fn(F64x8) -> F64x8) -> Self {
+        F64x16 {
+            lo: f(self.lo),
+            hi: f(self.hi),
+        }
+    }
+    /// `f` on each half of two packets.
+    #[inline(always)]
+    fn each2(self, o: Self, f: impl Fn(F64x8, F64x8) -> F64x8) -> Self {
+        F64x16 {
+            lo: f(self.lo, o.lo),
+            hi: f(self.hi, o.hi),
+        }
+    }
+    /// Every lane equal to `x`.
+    #[inline(always)]
+    pub const fn splat(x: f64) -> Self {
+        F64x16 {
+            lo: F64x8::new([x; 8]),
+            hi: F64x8::new([x; 8]),
+        }
+    }
+}
 
 /// A lane-wise boolean: `bool` for scalar lanes, an all-ones/all-zeros bit pattern for packets.
 pub trait Mask:
@@ -42,6 +123,20 @@ impl Mask for F64x8 {
     inline_fns! {
         fn any(self) -> bool { F64x8::any(self) }
         fn all(self) -> bool { F64x8::all(self) }
+    }
+}
+
+impl Mask for F32x16 {
+    inline_fns! {
+        fn any(self) -> bool { F32x16::any(self) }
+        fn all(self) -> bool { F32x16::all(self) }
+    }
+}
+
+impl Mask for F64x16 {
+    inline_fns! {
+        fn any(self) -> bool { self.lo.any() || self.hi.any() }
+        fn all(self) -> bool { self.lo.all() && self.hi.all() }
     }
 }
 
@@ -265,62 +360,70 @@ impl Lane for f32 {
 }
 
 // ---------------------------------------------------------------------------------------------
-// F32x8
+// F32x8 and F32x16
 
-impl Lane for F32x8 {
-    type Mask = F32x8;
-    const ZERO: Self = F32x8::new([0.0; 8]);
-    const ONE: Self = F32x8::new([1.0; 8]);
-    const TWO: Self = F32x8::new([2.0; 8]);
-    const HALF: Self = F32x8::new([0.5; 8]);
-    const EPSILON: Self = F32x8::new([f32::EPSILON; 8]);
+/// The f32 packet lanes, one text for both widths: `f32_packet!(F32x8, u32x8, 8)`.
+macro_rules! f32_packet {
+    ($t:ident, $u:ident, $n:literal) => {
+        impl Lane for $t {
+            type Mask = $t;
+            const ZERO: Self = $t::new([0.0; $n]);
+            const ONE: Self = $t::new([1.0; $n]);
+            const TWO: Self = $t::new([2.0; $n]);
+            const HALF: Self = $t::new([0.5; $n]);
+            const EPSILON: Self = $t::new([f32::EPSILON; $n]);
 
-    // On x86, minps and maxps are exactly select(a < b, a, b) and select(a > b, a, b), NaN and
-    // signed zeros included (the second operand wins when the compare is false): one instruction
-    // instead of a compare and a blend, which SSE2 spells as three. Elsewhere (NEON's min returns
-    // NaN, wasm's pmin swaps the operands) the generic selects keep the lanes bit-identical.
-    #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
-    #[inline(always)]
-    fn min(self, o: Self) -> Self {
-        self.fast_min(o)
-    }
-    #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
-    #[inline(always)]
-    fn max(self, o: Self) -> Self {
-        self.fast_max(o)
-    }
-    /// One unordered compare, rather than `!(x == x)`.
-    #[inline(always)]
-    fn is_nan(self) -> F32x8 {
-        F32x8::is_nan(self)
-    }
+            // On x86, minps and maxps are exactly select(a < b, a, b) and select(a > b, a, b),
+            // NaN and signed zeros included (the second operand wins when the compare is false):
+            // one instruction instead of a compare and a blend, which SSE2 spells as three.
+            // Elsewhere (NEON's min returns NaN, wasm's pmin swaps the operands) the generic
+            // selects keep the lanes bit-identical.
+            #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+            #[inline(always)]
+            fn min(self, o: Self) -> Self {
+                self.fast_min(o)
+            }
+            #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+            #[inline(always)]
+            fn max(self, o: Self) -> Self {
+                self.fast_max(o)
+            }
+            /// One unordered compare, rather than `!(x == x)`.
+            #[inline(always)]
+            fn is_nan(self) -> $t {
+                $t::is_nan(self)
+            }
 
-    inline_fns! {
-        fn c(x: f64) -> Self { F32x8::splat(x as f32) }
-        fn mul_add(self, b: Self, c: Self) -> Self { F32x8::mul_add(self, b, c) }
-        fn sqrt(self) -> Self { F32x8::sqrt(self) }
-        fn abs(self) -> Self { F32x8::from_bits(F32x8::to_bits(self) & u32x8::splat(0x7fff_ffff)) }
-    }
-    #[inline(always)]
-    fn copysign(self, sign: Self) -> Self {
-        F32x8::from_bits(
-            (F32x8::to_bits(self) & u32x8::splat(0x7fff_ffff))
-                | (F32x8::to_bits(sign) & u32x8::splat(0x8000_0000)),
-        )
-    }
-    #[inline(always)]
-    fn xorsign(self, sign: Self) -> Self {
-        F32x8::from_bits(F32x8::to_bits(self) ^ (F32x8::to_bits(sign) & u32x8::splat(0x8000_0000)))
-    }
-    inline_fns! {
-        fn lt(self, o: Self) -> F32x8 { self.simd_lt(o) }
-        fn le(self, o: Self) -> F32x8 { self.simd_le(o) }
-        fn gt(self, o: Self) -> F32x8 { self.simd_gt(o) }
-        fn ge(self, o: Self) -> F32x8 { self.simd_ge(o) }
-        fn eq(self, o: Self) -> F32x8 { self.simd_eq(o) }
-        fn select(m: F32x8, a: Self, b: Self) -> Self { m.select(a, b) }
-    }
+            inline_fns! {
+                fn c(x: f64) -> Self { $t::splat(x as f32) }
+                fn mul_add(self, b: Self, c: Self) -> Self { $t::mul_add(self, b, c) }
+                fn sqrt(self) -> Self { $t::sqrt(self) }
+                fn abs(self) -> Self { $t::from_bits($t::to_bits(self) & $u::splat(0x7fff_ffff)) }
+            }
+            #[inline(always)]
+            fn copysign(self, sign: Self) -> Self {
+                $t::from_bits(
+                    ($t::to_bits(self) & $u::splat(0x7fff_ffff))
+                        | ($t::to_bits(sign) & $u::splat(0x8000_0000)),
+                )
+            }
+            #[inline(always)]
+            fn xorsign(self, sign: Self) -> Self {
+                $t::from_bits($t::to_bits(self) ^ ($t::to_bits(sign) & $u::splat(0x8000_0000)))
+            }
+            inline_fns! {
+                fn lt(self, o: Self) -> $t { self.simd_lt(o) }
+                fn le(self, o: Self) -> $t { self.simd_le(o) }
+                fn gt(self, o: Self) -> $t { self.simd_gt(o) }
+                fn ge(self, o: Self) -> $t { self.simd_ge(o) }
+                fn eq(self, o: Self) -> $t { self.simd_eq(o) }
+                fn select(m: $t, a: Self, b: Self) -> Self { m.select(a, b) }
+            }
+        }
+    };
 }
+f32_packet!(F32x8, u32x8, 8);
+f32_packet!(F32x16, u32x16, 16);
 
 // ---------------------------------------------------------------------------------------------
 // f64: the reference instance
@@ -373,6 +476,32 @@ impl Lane for F64x8 {
     }
 }
 
+/// [`F64x8`]'s operations on each half.
+impl Lane for F64x16 {
+    type Mask = F64x16;
+    const ZERO: Self = F64x16::splat(0.0);
+    const ONE: Self = F64x16::splat(1.0);
+    const TWO: Self = F64x16::splat(2.0);
+    const HALF: Self = F64x16::splat(0.5);
+    const EPSILON: Self = F64x16::splat(f64::EPSILON);
+
+    inline_fns! {
+        fn c(x: f64) -> Self { F64x16::splat(x) }
+        fn mul_add(self, b: Self, c: Self) -> Self { self * b + c }
+        fn sqrt(self) -> Self { self.each(F64x8::sqrt) }
+        fn abs(self) -> Self { self.each(F64x8::abs) }
+        fn copysign(self, sign: Self) -> Self { self.each2(sign, Lane::copysign) }
+        fn lt(self, o: Self) -> F64x16 { self.each2(o, Lane::lt) }
+        fn le(self, o: Self) -> F64x16 { self.each2(o, Lane::le) }
+        fn gt(self, o: Self) -> F64x16 { self.each2(o, Lane::gt) }
+        fn ge(self, o: Self) -> F64x16 { self.each2(o, Lane::ge) }
+        fn eq(self, o: Self) -> F64x16 { self.each2(o, Lane::eq) }
+        fn select(m: F64x16, a: Self, b: Self) -> Self {
+            F64x16 { lo: m.lo.select(a.lo, b.lo), hi: m.hi.select(a.hi, b.hi) }
+        }
+    }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Lane by lane
 
@@ -404,9 +533,9 @@ macro_rules! scalar_lanes {
 scalar_lanes!(f32, f64);
 
 macro_rules! packet_lanes {
-    ($($t:ty: $s:ty),*) => {$(
+    ($($t:ty: $s:ty, $n:literal),*) => {$(
         impl Lanes for $t {
-            const WIDTH: usize = 8;
+            const WIDTH: usize = $n;
             type Scalar = $s;
             inline_fns! {
                 fn lane(self, i: usize) -> $s { super::lane_of(&self.to_array(), i) }
@@ -415,10 +544,28 @@ macro_rules! packet_lanes {
         }
     )*};
 }
-packet_lanes!(F32x8: f32, F64x8: f64);
+packet_lanes!(F32x8: f32, 8, F64x8: f64, 8, F32x16: f32, 16);
 
-/// A lane and the f64 lane of the same width: `f32` → `f64`, [`F32x8`] → [`F64x8`], and `f64` →
-/// itself. Accumulators sum in it, and set-up terms that cancel in f32 are computed in it.
+impl Lanes for F64x16 {
+    const WIDTH: usize = 16;
+    type Scalar = f64;
+    #[inline(always)]
+    fn lane(self, i: usize) -> f64 {
+        let half = if i & 8 == 0 { self.lo } else { self.hi };
+        half.lane(i)
+    }
+    #[inline(always)]
+    fn from_fn(mut f: impl FnMut(usize) -> f64) -> Self {
+        let lo = F64x8::from_fn(&mut f);
+        F64x16 {
+            lo,
+            hi: F64x8::from_fn(|i| f(i + 8)),
+        }
+    }
+}
+
+/// A lane and the f64 lane of the same width: `f32` → `f64`, [`F32x8`] → [`F64x8`], [`F32x16`]
+/// → [`F64x16`], and `f64` → itself. Accumulators sum in it, and set-up terms that cancel in f32 are computed in it.
 /// Widening is exact; narrowing rounds each lane to nearest.
 pub trait Widen: Lanes {
     /// The f64 lane of the same width.
@@ -448,6 +595,26 @@ impl Widen for F32x8 {
         fn narrow_mask(m: F64x8) -> F32x8 {
             F32x8::narrow(F64x8::select(m, F64x8::ONE, F64x8::ZERO)).gt(F32x8::ZERO)
         }
+    }
+}
+
+impl Widen for F32x16 {
+    type Wide = F64x16;
+    #[inline(always)]
+    fn widen(self) -> F64x16 {
+        let [lo, hi]: [F32x8; 2] = bytemuck::cast(self);
+        F64x16 {
+            lo: lo.widen(),
+            hi: hi.widen(),
+        }
+    }
+    #[inline(always)]
+    fn narrow(w: F64x16) -> F32x16 {
+        bytemuck::cast([F32x8::narrow(w.lo), F32x8::narrow(w.hi)])
+    }
+    #[inline(always)]
+    fn narrow_mask(m: F64x16) -> F32x16 {
+        bytemuck::cast([F32x8::narrow_mask(m.lo), F32x8::narrow_mask(m.hi)])
     }
 }
 

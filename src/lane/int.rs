@@ -1,17 +1,21 @@
-//! The 32-bit integer lane, `u32` and [`U32x8`], that the sequence generators are written over,
-//! and [`Lane32`]: the f32 lanes with access to their bits in it.
+//! The 32-bit integer lane, `u32`, [`U32x8`] and [`U32x16`], that the sequence generators are
+//! written over, and [`Lane32`]: the f32 lanes with access to their bits in it.
 
 use core::fmt::Debug;
 use core::ops::{Add, BitAnd, BitOr, BitXor, Shl, Shr, Sub};
 
-use wide::{bytemuck, i32x8};
+use wide::{bytemuck, i32x8, i32x16};
 
-use super::float::{F32x8, Lane};
+use super::float::{F32x8, F32x16, Lane};
 use super::vector::V2;
 
 /// Eight u32 lanes (`wide::u32x8`), the bits of an [`F32x8`]. Re-exported as
 /// [`crate::x8::U32x8`].
 pub type U32x8 = wide::u32x8;
+
+/// Sixteen u32 lanes (`wide::u32x16`), the bits of an [`F32x16`]. Re-exported as
+/// [`crate::x16::U32x16`].
+pub type U32x16 = wide::u32x16;
 
 /// 2⁻²⁴: the weight of bit 8 of a 32-bit value in a 24-bit float in [0, 1).
 const TWO_POW_M24: f32 = 1.0 / 16_777_216.0;
@@ -164,6 +168,78 @@ impl U32Lane for U32x8 {
             F32x8::from_i32x8(bytemuck::cast::<U32x8, i32x8>(imm::shr::<8>(self))) * F32x8::splat(TWO_POW_M24)
         }
     }
+}
+
+/// The sixteen-wide lane. With AVX-512 its operations are `wide`'s, one instruction each, but for
+/// the table lookups, byte shuffles and the high product, which go through two eight-wide halves.
+/// Without AVX-512 `wide` splits every operation into halves anyway, and these take the halves
+/// through [`U32x8`]'s own operations, with the immediate shifts and the SSE2 multiply that
+/// `wide`'s eight-wide operators lack.
+impl U32Lane for U32x16 {
+    type F = F32x16;
+    type Vec2 = V2<F32x16>;
+    #[inline(always)]
+    fn shr_by<const N: i32>(self) -> Self {
+        #[cfg(target_feature = "avx512f")]
+        return self >> N as u32;
+        #[cfg(not(target_feature = "avx512f"))]
+        return halves(self, U32x8::shr_by::<N>);
+    }
+    #[inline(always)]
+    fn shl_by<const N: i32>(self) -> Self {
+        #[cfg(target_feature = "avx512f")]
+        return self << N as u32;
+        #[cfg(not(target_feature = "avx512f"))]
+        return halves(self, U32x8::shl_by::<N>);
+    }
+    #[inline(always)]
+    fn wrapping_mul(self, b: Self) -> Self {
+        #[cfg(target_feature = "avx512f")]
+        return self * b;
+        #[cfg(not(target_feature = "avx512f"))]
+        return halves2(self, b, U32x8::wrapping_mul);
+    }
+    #[inline(always)]
+    fn top_bit_mask(self) -> Self {
+        #[cfg(target_feature = "avx512f")]
+        return bytemuck::cast(bytemuck::cast::<U32x16, i32x16>(self) >> 31);
+        #[cfg(not(target_feature = "avx512f"))]
+        return halves(self, U32x8::top_bit_mask);
+    }
+    inline_fns! {
+        fn splat(x: u32) -> Self { U32x16::splat(x) }
+        fn wrapping_add(self, b: Self) -> Self { self + b }
+        fn wrapping_sub(self, b: Self) -> Self { self - b }
+        fn div_rem(self, d: u32) -> (Self, Self) { Divisor::new(d).div_rem(self) }
+        fn map(self, f: impl Fn(u32) -> u32) -> Self { U32x16::new(self.to_array().map(f)) }
+        fn mul_hi(self, b: Self) -> Self { halves2(self, b, U32x8::mul_hi) }
+        fn gt_mask(self, b: Self) -> Self { self.simd_gt(b) }
+        fn select(mask: Self, a: Self, b: Self) -> Self { mask.select(a, b) }
+        fn any_nonzero(self) -> bool { self != U32x16::ZERO }
+        fn reverse_bits(self) -> Self { halves(self, U32x8::reverse_bits) }
+        fn ratio(self, den: u32) -> F32x16 {
+            bytemuck::cast::<U32x16, i32x16>(self).round_float() / F32x16::splat((den as i32) as f32)
+        }
+        fn to_unit_f32(self) -> F32x16 {
+            F32x16::from_i32x16(bytemuck::cast::<U32x16, i32x16>(self.shr_by::<8>()))
+                * F32x16::splat(TWO_POW_M24)
+        }
+    }
+}
+
+/// `f` on each eight-wide half of a sixteen-wide lane.
+#[inline(always)]
+fn halves(x: U32x16, f: impl Fn(U32x8) -> U32x8) -> U32x16 {
+    let [a, b]: [U32x8; 2] = bytemuck::cast(x);
+    bytemuck::cast([f(a), f(b)])
+}
+
+/// `f` on each eight-wide half of two sixteen-wide lanes.
+#[inline(always)]
+fn halves2(x: U32x16, y: U32x16, f: impl Fn(U32x8, U32x8) -> U32x8) -> U32x16 {
+    let [a, b]: [U32x8; 2] = bytemuck::cast(x);
+    let [c, d]: [U32x8; 2] = bytemuck::cast(y);
+    bytemuck::cast([f(a, c), f(b, d)])
 }
 
 /// Shifts of a packet by a constant. `wide`'s shift operators take the count in a register, and
@@ -382,6 +458,14 @@ impl Lane32 for F32x8 {
     inline_fns! {
         fn to_bits(self) -> U32x8 { F32x8::to_bits(self) }
         fn from_bits(u: U32x8) -> Self { F32x8::from_bits(u) }
+    }
+}
+
+impl Lane32 for F32x16 {
+    type U = U32x16;
+    inline_fns! {
+        fn to_bits(self) -> U32x16 { F32x16::to_bits(self) }
+        fn from_bits(u: U32x16) -> Self { F32x16::from_bits(u) }
     }
 }
 

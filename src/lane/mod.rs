@@ -1,14 +1,16 @@
 //! The lane abstraction: every algorithm in the crate is written once over [`Lane`] (and
 //! [`Math`](crate::math::Math), which adds the transcendental functions).
 //!
-//! Three instances exist:
+//! Four instances exist:
 //!
 //! - `f32`: the scalar form that the glam-facing API uses;
 //! - [`F32x8`]: the 8-wide packet form;
+//! - [`F32x16`]: the 16-wide packet form, one register with AVX-512 and two 8-wide halves
+//!   without;
 //! - `f64`: the reference instance. Its transcendental functions delegate to libm, so it measures
 //!   the error of the f32 polynomials rather than repeating it.
 //!
-//! The f32 and F32x8 instances are built so that lane *i* of a packet computation equals the scalar
+//! The f32 and packet instances are built so that lane *i* of a packet computation equals the scalar
 //! computation on lane *i*'s inputs, bit for bit:
 //!
 //! - `+ − × ÷` and `sqrt` are IEEE operations, correctly rounded in both widths;
@@ -44,8 +46,8 @@ mod float;
 mod int;
 mod vector;
 
-pub use float::{F32x8, F64x8, Lane, Lanes, Mask, Widen};
-pub use int::{Lane32, U32Lane, U32x8};
+pub use float::{F32x8, F32x16, F64x8, F64x16, Lane, Lanes, Mask, Widen};
+pub use int::{Lane32, U32Lane, U32x8, U32x16};
 pub use vector::{V2, V3};
 
 /// `[f(a₀, b₀), f(a₁, b₁), …]`: the element-wise map of two arrays of one length, without
@@ -63,10 +65,11 @@ pub(crate) fn zip_map<A, B, C: Copy + Default, const N: usize>(
     out
 }
 
-/// Element `i mod 8` of an eight-element array: the lane index of a packet, which callers
-/// form as `0..8`; reduced rather than checked, so there is no panic path.
+/// Element `i mod N` of an array of a packet's width N (8 or 16, a power of two): the lane index
+/// of a packet, which callers form as `0..N`; reduced rather than checked, so there is no panic
+/// path.
 #[inline(always)]
-pub(crate) fn lane_of<T: Copy>(a: &[T; 8], i: usize) -> T {
-    // The fallback is unreachable (i & 7 < 8), and the compiler drops it.
-    a.get(i & 7).copied().unwrap_or(a[0])
+pub(crate) fn lane_of<T: Copy + Default, const N: usize>(a: &[T; N], i: usize) -> T {
+    // The fallback is unreachable (i & (N − 1) < N), and the compiler drops it.
+    a.get(i & N.wrapping_sub(1)).copied().unwrap_or_default()
 }

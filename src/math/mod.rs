@@ -103,9 +103,10 @@ pub mod exp;
 pub mod log;
 pub mod trig;
 
-use crate::lane::{F32x8, Lane, Widen, inline_fns};
+use crate::lane::{F32x8, F32x16, Lane, Widen, inline_fns};
 
-/// The transcendental functions of a lane: the crate's own polynomials for `f32` and [`F32x8`],
+/// The transcendental functions of a lane: the crate's own polynomials for `f32`, [`F32x8`] and
+/// [`F32x16`],
 /// libm for the `f64` reference. Warps are generic over `L: Math`.
 pub trait Math: Widen {
     /// sin and cos, within the table's bound for |x| ≤ 6433.
@@ -134,7 +135,7 @@ pub trait Math: Widen {
     fn exp_m1(self) -> Self;
 }
 
-/// Both f32 lanes run the same generic polynomials, which is what makes them agree bit for bit.
+/// The f32 lanes run the same generic polynomials, which is what makes them agree bit for bit.
 macro_rules! own_math {
     ($t:ty) => {
         impl Math for $t {
@@ -157,6 +158,7 @@ macro_rules! own_math {
 
 own_math!(f32);
 own_math!(F32x8);
+own_math!(F32x16);
 
 /// The reference instance: libm in f64.
 impl Math for f64 {

@@ -1,4 +1,5 @@
-//! Random numbers in packets: [`Pcg32x8`], eight PCG32 streams advanced together.
+//! Random numbers in packets: [`Pcg32x8`], eight PCG32 streams advanced together, and
+//! [`Pcg32x16`], sixteen as two such packets.
 //!
 //! # Algorithm
 //!
@@ -43,8 +44,9 @@
 //! `0, 2⁻²⁴, …, 1 − 2⁻²⁴`, each with probability 2⁻²⁴, exactly representable in f32, so the
 //! result is in [0, 1) and is never 1.0.
 
-use crate::lane::{F32x8, U32Lane, U32x8, lane_of, zip_map};
+use crate::lane::{F32x8, F32x16, U32Lane, U32x8, U32x16, lane_of, zip_map};
 use rand_pcg::Pcg32;
+use wide::bytemuck;
 
 #[cfg(not(all(target_arch = "x86_64", not(target_feature = "avx2"))))]
 #[path = "lanes32.rs"]
@@ -169,6 +171,82 @@ impl Pcg32x8 {
 
     fn raw(&self) -> ([u64; 8], [u64; 8]) {
         (self.state.get(), self.inc.get())
+    }
+}
+
+/// Sixteen independent PCG32 generators, lane *i* bit-for-bit
+/// `rand_pcg::Pcg32::new(states[i], streams[i])`: lanes 0–7 and 8–15 are two [`Pcg32x8`], whose
+/// outputs fill the two halves of a sixteen-wide packet.
+///
+/// The state is 64 bits per lane, so sixteen lanes are two registers of eight 64-bit words
+/// even with AVX-512; the eight-wide layouts already step them in the best form each target
+/// has.
+///
+/// ```
+/// use mcsample::rng::Pcg32x16;
+/// use rand_core::Rng;
+///
+/// let mut packet = Pcg32x16::new(core::array::from_fn(|i| i as u64), [54; 16]);
+/// let mut scalar = rand_pcg::Pcg32::new(13, 54);
+/// assert_eq!(packet.next_u32x16().to_array()[13], scalar.next_u32());
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Pcg32x16 {
+    /// Lanes 0–7 and 8–15.
+    halves: [Pcg32x8; 2],
+}
+
+impl Pcg32x16 {
+    /// Sixteen generators: lane *i* equals `rand_pcg::Pcg32::new(states[i], streams[i])`, with
+    /// [`Pcg32x8::new`]'s seeding.
+    pub fn new(states: [u64; 16], streams: [u64; 16]) -> Self {
+        let half = |k: usize| {
+            let pick = |a: [u64; 16]| core::array::from_fn(|i| lane_of(&a, i + 8 * k));
+            Pcg32x8::new(pick(states), pick(streams))
+        };
+        Self {
+            halves: [half(0), half(1)],
+        }
+    }
+
+    /// The packet whose lane *i* continues `lanes[i]` from its current position.
+    pub fn from_lanes(lanes: [Pcg32; 16]) -> Self {
+        let states = lanes.clone().map(|g| g.state());
+        let incs = lanes.map(|g| (g.stream() << 1) | 1);
+        let half = |k: usize| {
+            let pick = |a: [u64; 16]| core::array::from_fn(|i| lane_of(&a, i + 8 * k));
+            Pcg32x8::from_raw(pick(states), pick(incs))
+        };
+        Self {
+            halves: [half(0), half(1)],
+        }
+    }
+
+    /// Lane `i` as a scalar `rand_pcg::Pcg32` at the same position (`i mod 16`), as
+    /// [`Pcg32x8::lane`].
+    pub fn lane(&self, i: usize) -> Pcg32 {
+        let [lo, hi] = &self.halves;
+        if i & 8 == 0 { lo.lane(i) } else { hi.lane(i) }
+    }
+
+    /// The next 32-bit output of every lane, then one step of every lane.
+    #[inline]
+    pub fn next_u32x16(&mut self) -> U32x16 {
+        let [lo, hi] = &mut self.halves;
+        bytemuck::cast([lo.next_u32x8(), hi.next_u32x8()])
+    }
+
+    /// The next output of every lane as a float in [0, 1), as [`Pcg32x8::next_f32x8`].
+    #[inline]
+    pub fn next_f32x16(&mut self) -> F32x16 {
+        self.next_u32x16().to_unit_f32()
+    }
+
+    /// Jumps every lane ahead by `delta` steps, as [`Pcg32x8::advance`].
+    pub fn advance(&mut self, delta: u64) {
+        for h in &mut self.halves {
+            h.advance(delta);
+        }
     }
 }
 

@@ -5,9 +5,10 @@ use glam::Vec2;
 
 use crate::lane::{U32Lane, V2};
 use crate::point::Point2;
-use crate::rng::Pcg32x8;
+use crate::rng::{Pcg32x8, Pcg32x16};
 use crate::seq;
 use crate::x8::Vec2x8;
+use crate::x16::Vec2x16;
 
 /// The source of an estimate's sample values: `get(s, pair)` is pair `pair` of dimensions of
 /// sample `s` of the estimate, in [0, 1)².
@@ -76,5 +77,14 @@ impl Samples<Vec2x8> for Pcg32x8 {
     fn get(&mut self, _s: u32, _pair: u32) -> Vec2x8 {
         let x = self.next_f32x8();
         Vec2x8::new(x, self.next_f32x8())
+    }
+}
+
+/// Sixteen lanes, as [`Pcg32x8`]'s eight.
+impl Samples<Vec2x16> for Pcg32x16 {
+    #[inline]
+    fn get(&mut self, _s: u32, _pair: u32) -> Vec2x16 {
+        let x = self.next_f32x16();
+        Vec2x16::new(x, self.next_f32x16())
     }
 }

@@ -1,4 +1,5 @@
-//! Lane equality: a packet function against its scalar twin, lane by lane, bit for bit.
+//! Lane equality: a packet function of either width against its scalar twin, lane by lane, bit
+//! for bit.
 //!
 //! See the [module documentation](super) for an example.
 
@@ -11,6 +12,7 @@ use std::string::String;
 use std::vec::Vec;
 
 use crate::x8::{F32x8, U32x8, Vec2x8, Vec3x8};
+use crate::x16::{F32x16, U32x16, Vec2x16, Vec3x16};
 
 /// A value whose identity is its bit pattern: the f32 and u32 components, in order.
 ///
@@ -52,36 +54,55 @@ impl Bits for Vec3 {
     }
 }
 
-/// A scalar value with an 8-lane packet twin: how [`check_lanes`] splits packets into lanes and
-/// builds them back.
+/// A scalar value with packet twins of eight and sixteen lanes: how [`check_lanes`] and
+/// [`check_lanes16`] split packets into lanes and build them back.
 ///
-/// Implemented for `f32` ([`F32x8`]), `u32` ([`U32x8`]), [`glam::Vec2`] ([`Vec2x8`]),
-/// [`glam::Vec3`] ([`Vec3x8`]), and tuples of up to three of them (tuples of packets), which is
-/// how a function of several arguments or results is checked.
+/// Implemented for `f32` ([`F32x8`], [`F32x16`]), `u32` ([`U32x8`], [`U32x16`]),
+/// [`glam::Vec2`] ([`Vec2x8`], [`Vec2x16`]), [`glam::Vec3`] ([`Vec3x8`], [`Vec3x16`]), and tuples
+/// of up to three of them (tuples of packets), which is how a function of several arguments or
+/// results is checked.
 pub trait Scalar: Copy + fmt::Debug + Bits {
     /// The packet of eight values.
     type X8: Copy;
+    /// The packet of sixteen values.
+    type X16: Copy;
     /// The packet whose lane `i` is `lanes[i]`.
     fn pack(lanes: [Self; 8]) -> Self::X8;
     /// The eight lanes of a packet.
     fn unpack(packet: Self::X8) -> [Self; 8];
+    /// The sixteen-wide packet whose lane `i` is `lanes[i]`.
+    fn pack16(lanes: [Self; 16]) -> Self::X16;
+    /// The sixteen lanes of a packet.
+    fn unpack16(packet: Self::X16) -> [Self; 16];
 }
 
 macro_rules! scalar_impls {
-    ($($s:ty => $p:ty),+) => {$(
+    ($($s:ty => $p:ty, $q:ty),+) => {$(
         impl Scalar for $s {
             type X8 = $p;
+            type X16 = $q;
             fn pack(lanes: [Self; 8]) -> $p {
                 <$p>::from(lanes)
             }
             fn unpack(packet: $p) -> [Self; 8] {
                 packet.to_array()
             }
+            fn pack16(lanes: [Self; 16]) -> $q {
+                <$q>::from(lanes)
+            }
+            fn unpack16(packet: $q) -> [Self; 16] {
+                packet.to_array()
+            }
         }
     )+};
 }
 
-scalar_impls!(f32 => F32x8, u32 => U32x8, Vec2 => Vec2x8, Vec3 => Vec3x8);
+scalar_impls!(
+    f32 => F32x8, F32x16,
+    u32 => U32x8, U32x16,
+    Vec2 => Vec2x8, Vec2x16,
+    Vec3 => Vec3x8, Vec3x16
+);
 
 macro_rules! tuple_impls {
     ($(($($t:ident $i:tt),+))+) => {$(
@@ -93,11 +114,19 @@ macro_rules! tuple_impls {
 
         impl<$($t: Scalar),+> Scalar for ($($t,)+) {
             type X8 = ($($t::X8,)+);
+            type X16 = ($($t::X16,)+);
             fn pack(lanes: [Self; 8]) -> Self::X8 {
                 ($($t::pack(lanes.map(|l| l.$i)),)+)
             }
             fn unpack(packet: Self::X8) -> [Self; 8] {
                 let split = ($($t::unpack(packet.$i),)+);
+                core::array::from_fn(|k| ($(split.$i[k],)+))
+            }
+            fn pack16(lanes: [Self; 16]) -> Self::X16 {
+                ($($t::pack16(lanes.map(|l| l.$i)),)+)
+            }
+            fn unpack16(packet: Self::X16) -> [Self; 16] {
+                let split = ($($t::unpack16(packet.$i),)+);
                 core::array::from_fn(|k| ($(split.$i[k],)+))
             }
         }
@@ -116,7 +145,7 @@ tuple_impls! {
 pub struct LaneMismatch {
     /// Index into the inputs of the first mismatching lane's input.
     pub index: usize,
-    /// Lane of the packet in which it was evaluated (`index % 8`).
+    /// Lane of the packet in which it was evaluated (`index` modulo the width).
     pub lane: usize,
     /// The input, Debug-formatted.
     pub input: String,
@@ -161,8 +190,8 @@ impl fmt::Display for LaneMismatch {
 
 impl std::error::Error for LaneMismatch {}
 
-/// Check that lane *i* of `packet` equals `scalar` applied to lane *i*'s input, bit for bit, for
-/// every input.
+/// Check that lane *i* of the eight-wide `packet` equals `scalar` applied to lane *i*'s input,
+/// bit for bit, for every input.
 ///
 /// The inputs are packed eight at a time in order (input `j` goes to lane `j % 8`); when their
 /// number is not a multiple of 8 the last packet is filled by repeating the inputs from the
@@ -179,21 +208,48 @@ impl std::error::Error for LaneMismatch {}
 pub fn check_lanes<S, T>(
     inputs: &[S],
     mut packet: impl FnMut(S::X8) -> T::X8,
-    mut scalar: impl FnMut(S) -> T,
+    scalar: impl FnMut(S) -> T,
 ) -> Result<usize, Box<LaneMismatch>>
 where
     S: Scalar,
     T: Scalar,
 {
+    check_width(inputs, |l: [S; 8]| T::unpack(packet(S::pack(l))), scalar)
+}
+
+/// [`check_lanes`] for a sixteen-wide `packet`: input `j` goes to lane `j % 16`, and the count
+/// returned is the number of inputs rounded up to a multiple of 16.
+pub fn check_lanes16<S, T>(
+    inputs: &[S],
+    mut packet: impl FnMut(S::X16) -> T::X16,
+    scalar: impl FnMut(S) -> T,
+) -> Result<usize, Box<LaneMismatch>>
+where
+    S: Scalar,
+    T: Scalar,
+{
+    check_width(
+        inputs,
+        |l: [S; 16]| T::unpack16(packet(S::pack16(l))),
+        scalar,
+    )
+}
+
+/// Both checks: `packet` maps N lanes of input to N lanes of output through a packet.
+fn check_width<S: Scalar, T: Scalar, const N: usize>(
+    inputs: &[S],
+    mut packet: impl FnMut([S; N]) -> [T; N],
+    mut scalar: impl FnMut(S) -> T,
+) -> Result<usize, Box<LaneMismatch>> {
     let n = inputs.len();
-    let chunks = n.div_ceil(8);
-    let checked = chunks * 8;
+    let chunks = n.div_ceil(N);
+    let checked = chunks * N;
     let mut first: Option<LaneMismatch> = None;
     let mut mismatches = 0;
     let (mut pb, mut sb) = (Vec::new(), Vec::new());
     for c in 0..chunks {
-        let lanes: [S; 8] = core::array::from_fn(|k| inputs[(c * 8 + k) % n]);
-        let out = T::unpack(packet(S::pack(lanes)));
+        let lanes: [S; N] = core::array::from_fn(|k| inputs[(c * N + k) % n]);
+        let out = packet(lanes);
         for (k, (&input, got)) in lanes.iter().zip(out).enumerate() {
             let want = scalar(input);
             pb.clear();
@@ -204,7 +260,7 @@ where
                 mismatches += 1;
                 if first.is_none() {
                     first = Some(LaneMismatch {
-                        index: (c * 8 + k) % n,
+                        index: (c * N + k) % n,
                         lane: k,
                         input: format!("{input:?}"),
                         packet: format!("{got:?}"),

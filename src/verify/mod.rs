@@ -33,8 +33,8 @@
 //!
 //! # Lane equality
 //!
-//! [`check_lanes`] runs a packet function on inputs packed eight at a time and its scalar twin on
-//! each input, and compares every lane's output by its bit pattern ([`Bits`]). Scalars and their
+//! [`check_lanes`] runs a packet function on inputs packed eight at a time ([`check_lanes16`]:
+//! sixteen) and its scalar twin on each input, and compares every lane's output by its bit pattern ([`Bits`]). Scalars and their
 //! packets are related by [`Scalar`]; tuples give functions of several arguments.
 //!
 //! # Example: testing your own warp
@@ -105,6 +105,6 @@ mod shapes;
 pub use cap::Cap;
 pub use chi2::{ChiSquare, ChiSquareResult, Disk, Domain, ExpectedCounts, Sphere, Square};
 pub use gamma::{chi2_sf, gamma_p, gamma_q, ln_gamma, sidak_alpha};
-pub use lanes::{Bits, LaneMismatch, Scalar, check_lanes};
+pub use lanes::{Bits, LaneMismatch, Scalar, check_lanes, check_lanes16};
 pub use planar::{PlanarLight, square_to_triangle, triangle_to_square};
 pub use shapes::ShapeFacts;

@@ -16,6 +16,7 @@ use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, TAU};
 
 use glam::Vec2;
 use mcsample::verify::registry::Sampler;
+use mcsample::verify::{Scalar, check_lanes, check_lanes16};
 
 /// 1 − 2⁻²⁴, the largest f32 below 1.
 pub const ONE_MINUS_EPS_F32: f32 = 1.0 - 1.0 / 16_777_216.0;
@@ -900,3 +901,73 @@ pub fn reference(s: Sampler) -> Option<Reference> {
         _ => None,
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// Lane equality in both packet widths
+
+/// Checks `x8` and `x16` against their scalar twin `scalar` with `check_lanes` and
+/// `check_lanes16`, and records each width's first mismatch under `name`.
+pub fn check_both<S: Scalar, T: Scalar>(
+    failures: &mut Vec<String>,
+    name: &str,
+    inputs: &[S],
+    x8: impl FnMut(S::X8) -> T::X8,
+    x16: impl FnMut(S::X16) -> T::X16,
+    scalar: impl Fn(S) -> T,
+) {
+    if let Err(m) = check_lanes(inputs, x8, &scalar) {
+        failures.push(format!("{name} (x8): {m}"));
+    }
+    if let Err(m) = check_lanes16(inputs, x16, &scalar) {
+        failures.push(format!("{name} (x16): {m}"));
+    }
+}
+
+/// A function checked in both packet widths against its scalar form, written once:
+///
+/// - `lanes!(failures, "name", &inputs, path::to::generic_fn)`;
+/// - `lanes!(failures, "name", &inputs, |pattern: Type| body)`, where `Type` and `body` name the
+///   width through `L` (the float lane), `V2`, `V3` and `U` (the u32 lane), which the macro binds
+///   to `f32`, `Vec2`, `Vec3`, `u32` for the scalar form and to each packet width in turn.
+macro_rules! lanes {
+    ($failures:expr, $name:expr, $inputs:expr, $func:path) => {
+        $crate::common::check_both($failures, $name, $inputs, $func, $func, $func)
+    };
+    ($failures:expr, $name:expr, $inputs:expr, |$p:tt : $t:ty| $body:expr) => {{
+        let scalar = {
+            #[allow(dead_code)]
+            type L = f32;
+            #[allow(dead_code)]
+            type U = u32;
+            #[allow(dead_code)]
+            type V2 = glam::Vec2;
+            #[allow(dead_code)]
+            type V3 = glam::Vec3;
+            |$p: $t| $body
+        };
+        let x8 = {
+            #[allow(dead_code)]
+            type L = mcsample::x8::F32x8;
+            #[allow(dead_code)]
+            type U = mcsample::x8::U32x8;
+            #[allow(dead_code)]
+            type V2 = mcsample::x8::Vec2x8;
+            #[allow(dead_code)]
+            type V3 = mcsample::x8::Vec3x8;
+            |$p: $t| $body
+        };
+        let x16 = {
+            #[allow(dead_code)]
+            type L = mcsample::x16::F32x16;
+            #[allow(dead_code)]
+            type U = mcsample::x16::U32x16;
+            #[allow(dead_code)]
+            type V2 = mcsample::x16::Vec2x16;
+            #[allow(dead_code)]
+            type V3 = mcsample::x16::Vec3x16;
+            |$p: $t| $body
+        };
+        $crate::common::check_both($failures, $name, $inputs, x8, x16, scalar)
+    }};
+}
+pub(crate) use lanes;

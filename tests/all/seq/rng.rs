@@ -1,8 +1,8 @@
-//! `Pcg32x8` against `rand_pcg::Pcg32`, lane by lane: outputs, floats, jump-ahead, a golden vector
-//! and a negative control for the comparison itself.
+//! `Pcg32x8` and `Pcg32x16` against `rand_pcg::Pcg32`, lane by lane: outputs, floats,
+//! jump-ahead, a golden vector and a negative control for the comparison itself.
 
 use super::golden::GOLDEN_PCG32;
-use mcsample::rng::Pcg32x8;
+use mcsample::rng::{Pcg32x8, Pcg32x16};
 use rand_core::Rng;
 use rand_pcg::Pcg32;
 
@@ -318,5 +318,53 @@ fn comparison_detects_a_wrong_multiplier() {
         assert_eq!(run(PCG_MULTIPLIER), None, "seed set {k}");
         // ... and a multiplier off by 4 (still ≡ 1 mod 4, a full-period LCG) is caught.
         assert!(run(PCG_MULTIPLIER + 4).is_some(), "seed set {k}");
+    }
+}
+
+/// Sixteen lanes: two seed sets side by side, each lane against its own `rand_pcg::Pcg32`, in
+/// u32 and f32 outputs, through the lane views and `from_lanes`, and after a jump.
+#[test]
+fn sixteen_lanes_match_rand_pcg() {
+    let sets = seed_sets();
+    for (k, pair) in sets.chunks_exact(2).enumerate() {
+        let join = |a: [u64; 8], b: [u64; 8]| -> [u64; 16] {
+            core::array::from_fn(|i| if i < 8 { a[i] } else { b[i - 8] })
+        };
+        let states = join(pair[0].0, pair[1].0);
+        let streams = join(pair[0].1, pair[1].1);
+        let mut packet = Pcg32x16::new(states, streams);
+        let mut refs: [Pcg32; 16] = core::array::from_fn(|i| Pcg32::new(states[i], streams[i]));
+        for step in 0..STEPS {
+            let (u, f) = if step % 2 == 0 {
+                (packet.next_u32x16().to_array(), None)
+            } else {
+                let f = packet.next_f32x16().to_array();
+                ([0; 16], Some(f))
+            };
+            for (lane, r) in refs.iter_mut().enumerate() {
+                let want = r.next_u32();
+                match f {
+                    None => assert_eq!(u[lane], want, "set {k}, step {step}, lane {lane}"),
+                    Some(f) => assert_eq!(
+                        f[lane].to_bits(),
+                        ((want >> 8) as f32 * (1.0 / 16_777_216.0)).to_bits(),
+                        "set {k}, step {step}, lane {lane}"
+                    ),
+                }
+            }
+        }
+        let mut views: [Pcg32; 16] = core::array::from_fn(|i| packet.lane(i));
+        assert_eq!(Pcg32x16::from_lanes(views.clone()), packet);
+        let mut jumped = packet;
+        jumped.advance(1000);
+        for _ in 0..1000 {
+            packet.next_u32x16();
+        }
+        assert_eq!(jumped, packet);
+        let got = packet.next_u32x16().to_array();
+        for v in &mut views {
+            v.advance(1000);
+        }
+        assert_eq!(got, core::array::from_fn(|i| views[i].next_u32()));
     }
 }

@@ -1,5 +1,5 @@
-//! Packet == scalar, bit for bit, on 2¹⁶ random inputs mixed with the hard inputs (NaN, ±∞, 0,
-//! −0, 1, 1 − 2⁻²⁴, subnormals, huge values):
+//! Packet == scalar, bit for bit, in both packet widths (8 and 16 lanes), on 2¹⁶ random inputs
+//! mixed with the hard inputs (NaN, ±∞, 0, −0, 1, 1 − 2⁻²⁴, subnormals, huge values):
 //!
 //! - every sampler of the registry: sample, pdf and inverse, at the samples and at arbitrary
 //!   points;
@@ -7,19 +7,19 @@
 //!   that one packet mixes code paths (spherical and area sampling, inside and outside a
 //!   support), and the frame.
 
-use crate::common::TestRng;
+use crate::common::{TestRng, lanes};
 use glam::{Vec2, Vec3};
-use mcsample::frame::{self, Frame};
+use mcsample::frame::Frame;
 use mcsample::verify::registry;
-use mcsample::verify::{Scalar, check_lanes};
+use mcsample::verify::{check_lanes, check_lanes16};
 use mcsample::warp::{self, ONE_MINUS_EPS};
-use mcsample::x8::{F32x8, Vec2x8, Vec3x8};
+use mcsample::x8::{F32x8, Vec2x8};
+use mcsample::x16::{F32x16, Vec2x16};
 
 const N: usize = 1 << 16;
 
-/// Three vertices (or a corner and two edges), scalar and packet.
+/// Three vertices (or a corner and two edges).
 type Tri = (Vec3, Vec3, Vec3);
-type Tri8 = (Vec3x8, Vec3x8, Vec3x8);
 
 const HARD: [f32; 16] = [
     0.0,
@@ -107,19 +107,6 @@ fn rectangle(g: &mut TestRng) -> Tri {
     (corner, ex, ey)
 }
 
-fn run<S: Scalar, T: Scalar>(
-    failures: &mut Vec<String>,
-    name: &str,
-    inputs: &[S],
-    packet: impl FnMut(S::X8) -> T::X8,
-    scalar: impl FnMut(S) -> T,
-) {
-    match check_lanes(inputs, packet, scalar) {
-        Ok(n) => assert!(n >= inputs.len()),
-        Err(m) => failures.push(format!("{name}: {m}")),
-    }
-}
-
 #[test]
 fn every_registered_sampler_matches_its_scalar_twin_bit_for_bit() {
     let mut g = TestRng::new(5);
@@ -127,13 +114,7 @@ fn every_registered_sampler_matches_its_scalar_twin_bit_for_bit() {
     let mut failures = Vec::new();
     for s in registry::registry() {
         let name = s.name();
-        run(
-            &mut failures,
-            &name,
-            &us,
-            |u: Vec2x8| s.sample(u),
-            |u: Vec2| s.sample(u),
-        );
+        lanes!(&mut failures, &name, &us, |u: V2| s.sample(u));
         // Points: half the samples, half arbitrary directions with hard components.
         let xs: Vec<Vec3> = us
             .iter()
@@ -145,20 +126,8 @@ fn every_registered_sampler_matches_its_scalar_twin_bit_for_bit() {
                 }
             })
             .collect();
-        run(
-            &mut failures,
-            &name,
-            &xs,
-            |x: Vec3x8| s.pdf(x),
-            |x: Vec3| s.pdf(x),
-        );
-        run(
-            &mut failures,
-            &name,
-            &xs,
-            |x: Vec3x8| s.inverse(x),
-            |x: Vec3| s.inverse(x),
-        );
+        lanes!(&mut failures, &name, &xs, |x: V3| s.pdf(x));
+        lanes!(&mut failures, &name, &xs, |x: V3| s.inverse(x));
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
@@ -173,84 +142,50 @@ fn warps_with_a_different_parameter_in_every_lane_match_their_scalar_twins() {
     let f = &mut f;
 
     let hs: Vec<f32> = (0..N).map(|_| param(&mut g, 1e-8, 2.0)).collect();
-    run(
-        f,
-        "cone_h_from_cos",
-        &xs,
-        warp::cone_h_from_cos,
-        warp::cone_h_from_cos,
-    );
-    run(
-        f,
-        "cone_h_from_sin2",
-        &xs,
-        warp::cone_h_from_sin2,
-        warp::cone_h_from_sin2,
-    );
+    lanes!(f, "cone_h_from_cos", &xs, warp::cone_h_from_cos);
+    lanes!(f, "cone_h_from_sin2", &xs, warp::cone_h_from_sin2);
     let uh: Vec<(Vec2, f32)> = us.iter().copied().zip(hs.iter().copied()).collect();
-    run(
+    lanes!(
         f,
         "uniform_cone",
         &uh,
-        |(u, h): (Vec2x8, F32x8)| warp::uniform_cone(u, h),
-        |(u, h): (Vec2, f32)| warp::uniform_cone(u, h),
+        |(u, h): (V2, L)| warp::uniform_cone(u, h)
     );
     let wh: Vec<(Vec3, f32)> = ws.iter().copied().zip(hs.iter().copied()).collect();
-    run(
-        f,
-        "uniform_cone_inverse",
-        &wh,
-        |(w, h): (Vec3x8, F32x8)| warp::uniform_cone_inverse(w, h),
-        |(w, h): (Vec3, f32)| warp::uniform_cone_inverse(w, h),
-    );
-    run(
-        f,
-        "uniform_cone_pdf",
-        &wh,
-        |(w, h): (Vec3x8, F32x8)| warp::uniform_cone_pdf(w, h),
-        |(w, h): (Vec3, f32)| warp::uniform_cone_pdf(w, h),
-    );
+    lanes!(f, "uniform_cone_inverse", &wh, |(w, h): (V3, L)| {
+        warp::uniform_cone_inverse(w, h)
+    });
+    lanes!(f, "uniform_cone_pdf", &wh, |(w, h): (V3, L)| {
+        warp::uniform_cone_pdf(w, h)
+    });
 
     let ns: Vec<f32> = (0..N).map(|_| param(&mut g, 1e-3, 1e7)).collect();
     let un: Vec<(Vec2, f32)> = us.iter().copied().zip(ns.iter().copied()).collect();
-    run(
-        f,
-        "phong_lobe",
-        &un,
-        |(u, n): (Vec2x8, F32x8)| warp::phong_lobe(u, n),
-        |(u, n): (Vec2, f32)| warp::phong_lobe(u, n),
-    );
+    lanes!(f, "phong_lobe", &un, |(u, n): (V2, L)| warp::phong_lobe(
+        u, n
+    ));
     // The hard values as cos α, in directions whose x and y are hard values too.
     let cn: Vec<(Vec3, f32)> = (xs.iter().zip(&ws).zip(&ns))
         .map(|((&c, w), &n)| (Vec3::new(w.x, w.y, c), n))
         .collect();
-    run(
-        f,
-        "phong_lobe_pdf",
-        &cn,
-        |(w, n): (Vec3x8, F32x8)| warp::phong_lobe_pdf(w, n),
-        |(w, n): (Vec3, f32)| warp::phong_lobe_pdf(w, n),
-    );
+    lanes!(f, "phong_lobe_pdf", &cn, |(w, n): (V3, L)| {
+        warp::phong_lobe_pdf(w, n)
+    });
     let wn: Vec<(Vec3, f32)> = ws.iter().copied().zip(ns.iter().copied()).collect();
-    run(
-        f,
-        "phong_lobe_inverse",
-        &wn,
-        |(w, n): (Vec3x8, F32x8)| warp::phong_lobe_inverse(w, n),
-        |(w, n): (Vec3, f32)| warp::phong_lobe_inverse(w, n),
-    );
+    lanes!(f, "phong_lobe_inverse", &wn, |(w, n): (V3, L)| {
+        warp::phong_lobe_inverse(w, n)
+    });
 
     // Spherical polygons: a different triangle in every lane. Directions are drawn towards the
     // polygon half of the time, so inside and outside both occur.
     let tris: Vec<Tri> = (0..N).map(|_| triangle(&mut g)).collect();
     let st: Vec<(Vec2, Tri)> = us.iter().copied().zip(tris.iter().copied()).collect();
-    run(
-        f,
-        "spherical_triangle",
-        &st,
-        |(u, (a, b, c)): (Vec2x8, Tri8)| warp::spherical_triangle(u, a, b, c),
-        |(u, (a, b, c)): (Vec2, Tri)| warp::spherical_triangle(u, a, b, c),
-    );
+    lanes!(f, "spherical_triangle", &st, |(u, (a, b, c)): (
+        V2,
+        (V3, V3, V3)
+    )| {
+        warp::spherical_triangle(u, a, b, c)
+    });
     let tw: Vec<(Vec3, Tri)> = st
         .iter()
         .zip(&ws)
@@ -259,30 +194,27 @@ fn warps_with_a_different_parameter_in_every_lane_match_their_scalar_twins() {
             (if g.below(2) == 0 { toward } else { w }, (a, b, c))
         })
         .collect();
-    run(
-        f,
-        "spherical_triangle_pdf",
-        &tw,
-        |(w, (a, b, c)): (Vec3x8, Tri8)| warp::spherical_triangle_pdf(w, a, b, c),
-        |(w, (a, b, c)): (Vec3, Tri)| warp::spherical_triangle_pdf(w, a, b, c),
-    );
-    run(
-        f,
-        "spherical_triangle_inverse",
-        &tw,
-        |(w, (a, b, c)): (Vec3x8, Tri8)| warp::spherical_triangle_inverse(w, a, b, c),
-        |(w, (a, b, c)): (Vec3, Tri)| warp::spherical_triangle_inverse(w, a, b, c),
-    );
+    lanes!(f, "spherical_triangle_pdf", &tw, |(w, (a, b, c)): (
+        V3,
+        (V3, V3, V3)
+    )| {
+        warp::spherical_triangle_pdf(w, a, b, c)
+    });
+    lanes!(f, "spherical_triangle_inverse", &tw, |(w, (a, b, c)): (
+        V3,
+        (V3, V3, V3)
+    )| {
+        warp::spherical_triangle_inverse(w, a, b, c)
+    });
 
     let rects: Vec<Tri> = (0..N).map(|_| rectangle(&mut g)).collect();
     let sr: Vec<(Vec2, Tri)> = us.iter().copied().zip(rects.iter().copied()).collect();
-    run(
-        f,
-        "spherical_rectangle",
-        &sr,
-        |(u, (s, ex, ey)): (Vec2x8, Tri8)| warp::spherical_rectangle(u, s, ex, ey),
-        |(u, (s, ex, ey)): (Vec2, Tri)| warp::spherical_rectangle(u, s, ex, ey),
-    );
+    lanes!(f, "spherical_rectangle", &sr, |(u, (s, ex, ey)): (
+        V2,
+        (V3, V3, V3)
+    )| {
+        warp::spherical_rectangle(u, s, ex, ey)
+    });
     let rp: Vec<((Vec3, Vec3), Tri)> = sr
         .iter()
         .zip(&ws)
@@ -292,42 +224,31 @@ fn warps_with_a_different_parameter_in_every_lane_match_their_scalar_twins() {
             ((if g.below(2) == 0 { toward } else { w }, p), (s, ex, ey))
         })
         .collect();
-    run(
-        f,
-        "spherical_rectangle_pdf",
-        &rp,
-        |((w, _), (s, ex, ey)): ((Vec3x8, Vec3x8), Tri8)| {
-            warp::spherical_rectangle_pdf(w, s, ex, ey)
-        },
-        |((w, _), (s, ex, ey)): ((Vec3, Vec3), Tri)| warp::spherical_rectangle_pdf(w, s, ex, ey),
-    );
-    run(
-        f,
-        "spherical_rectangle_inverse",
-        &rp,
-        |((_, p), (s, ex, ey)): ((Vec3x8, Vec3x8), Tri8)| {
-            warp::spherical_rectangle_inverse(p, s, ex, ey)
-        },
-        |((_, p), (s, ex, ey)): ((Vec3, Vec3), Tri)| {
-            warp::spherical_rectangle_inverse(p, s, ex, ey)
-        },
-    );
+    lanes!(f, "spherical_rectangle_pdf", &rp, |(
+        (w, _),
+        (s, ex, ey),
+    ): (
+        (V3, V3),
+        (V3, V3, V3)
+    )| {
+        warp::spherical_rectangle_pdf(w, s, ex, ey)
+    });
+    lanes!(f, "spherical_rectangle_inverse", &rp, |(
+        (_, p),
+        (s, ex, ey),
+    ): (
+        (V3, V3),
+        (V3, V3, V3)
+    )| {
+        warp::spherical_rectangle_inverse(p, s, ex, ey)
+    });
 
     // Frames: construction and both transforms.
     let nv: Vec<(Vec3, Vec3)> = ws.iter().copied().zip(ws.iter().rev().copied()).collect();
-    run(
-        f,
-        "Frame",
-        &nv,
-        |(n, v): (Vec3x8, Vec3x8)| {
-            let fr = frame::Frame::from_normal(n);
-            (fr.t, fr.b, (fr.to_local(v), fr.to_world(v)))
-        },
-        |(n, v): (Vec3, Vec3)| {
-            let fr = Frame::from_normal(n);
-            (fr.t, fr.b, (fr.to_local(v), fr.to_world(v)))
-        },
-    );
+    lanes!(f, "Frame", &nv, |(n, v): (V3, V3)| {
+        let fr = Frame::from_normal(n);
+        (fr.t, fr.b, (fr.to_local(v), fr.to_world(v)))
+    });
 
     assert!(
         f.is_empty(),
@@ -351,6 +272,15 @@ fn negative_control_one_lane_off_by_one_ulp_is_caught() {
     };
     let err = check_lanes(&us, broken, warp::concentric_disk).unwrap_err();
     assert_eq!(err.lane, 5);
+    let broken16 = |u: Vec2x16| {
+        let mut p = warp::concentric_disk(u);
+        let mut x = p.x.to_array();
+        x[13] = f32::from_bits(x[13].to_bits() ^ 1);
+        p.x = F32x16::new(x);
+        p
+    };
+    let err = check_lanes16(&us, broken16, warp::concentric_disk).unwrap_err();
+    assert_eq!((err.lane, err.mismatches, err.checked), (13, 4, 64));
 }
 
 /// The two lane operations whose scalar and packet forms are written differently: `xorsign`

@@ -1,0 +1,27 @@
+//! The sixteen-wide packet types: sixteen lanes of f32 in structure-of-arrays form, with the same
+//! conversions as [`x8`](crate::x8)'s.
+//!
+//! With AVX-512 an [`F32x16`] is one register. Without it, `wide` runs each operation on two
+//! eight-wide halves, and every function still gives, in lane *i*, the scalar result on lane
+//! *i*'s input, bit for bit.
+//!
+//! ```
+//! use glam::Vec2;
+//! use mcsample::warp;
+//! use mcsample::x16::Vec2x16;
+//!
+//! let u = Vec2::new(0.3, 0.7);
+//! let sixteen = warp::cosine_hemisphere(Vec2x16::splat(u));
+//! assert_eq!(sixteen.lane(13), warp::cosine_hemisphere(u));
+//! ```
+
+pub use crate::lane::{F32x16, U32x16};
+use crate::lane::{V2, V3};
+use crate::x8::packet_vectors;
+
+/// Sixteen 2D vectors, one per lane.
+pub type Vec2x16 = V2<F32x16>;
+/// Sixteen 3D vectors, one per lane.
+pub type Vec3x16 = V3<F32x16>;
+
+packet_vectors!(F32x16, 16);

@@ -48,7 +48,7 @@
 //! al. 2005), driven by one u. Both sum in f64 and are generic over the f64 lane: `f64`, or
 //! [`F64x8`] for one accumulator or reservoir per packet lane.
 
-use crate::lane::{F64x8, Lane, Lane32, Lanes, U32Lane, U32x8, zip_map};
+use crate::lane::{F64x8, F64x16, Lane, Lane32, Lanes, U32Lane, U32x8, U32x16, zip_map};
 use crate::warp::ONE_MINUS_EPS;
 
 /// Where f's weight is decided without a ratio: NaN, zero or negative inputs, and ∞.
@@ -537,8 +537,8 @@ pub struct Reservoir<T, W = f64> {
 }
 
 /// A candidate a [`Reservoir`] can keep lane by lane: chosen between two by the mask `M` of the
-/// reservoir's lane. Every `Copy` type is one for the scalar reservoir; [`U32x8`] (candidate
-/// indices) for the eight-lane one.
+/// reservoir's lane. Every `Copy` type is one for the scalar reservoir; [`U32x8`] and [`U32x16`]
+/// (candidate indices) for the packet ones.
 pub trait Candidate<M>: Copy {
     /// One lane's candidate.
     type Scalar: Copy;
@@ -567,6 +567,20 @@ impl Candidate<F64x8> for U32x8 {
     fn pick(m: F64x8, a: U32x8, b: U32x8) -> U32x8 {
         let bits = m.to_bitmask();
         let m = U32x8::new(core::array::from_fn(|i| 0u32.wrapping_sub((bits >> i) & 1)));
+        (a & m) | (b & !m)
+    }
+    #[inline(always)]
+    fn in_lane(self, i: usize) -> u32 {
+        crate::lane::lane_of(&self.to_array(), i)
+    }
+}
+
+impl Candidate<F64x16> for U32x16 {
+    type Scalar = u32;
+    #[inline(always)]
+    fn pick(m: F64x16, a: U32x16, b: U32x16) -> U32x16 {
+        let bits = m.lo.to_bitmask() | (m.hi.to_bitmask() << 8);
+        let m = U32x16::new(core::array::from_fn(|i| 0u32.wrapping_sub((bits >> i) & 1)));
         (a & m) | (b & !m)
     }
     #[inline(always)]

@@ -28,6 +28,7 @@ use mcsample::warp::{
     self, SolidAngleRectangle, SolidAngleTriangle, SphericalRectangle, SphericalTriangle,
 };
 use mcsample::x8::{Vec2x8, Vec3x8};
+use mcsample::x16::{Vec2x16, Vec3x16};
 use rand_core::Rng;
 use rand_pcg::Pcg32;
 
@@ -47,6 +48,10 @@ struct Row {
     /// Our scalar loop's time over the plain glam+std version's, in the same run.
     scalar_vs_plain: Option<f64>,
     x8_ns: f64,
+    /// The sixteen-wide loop, ns per sample, and its throughput over the eight-wide loop's,
+    /// timed as their own interleaved pair.
+    x16_ns: f64,
+    x16_vs_x8: f64,
     max_abs_err: f64,
     worst_u: Vec2,
     /// The plain version's worst error against the same f64 instance, where it computes the same
@@ -89,8 +94,8 @@ fn error_points(quick: bool) -> Vec<Vec2> {
     v
 }
 
-/// Median ns per point of two loops over the same points (in two layouts: single points, or
-/// packets of eight), interleaved run by run so that their ratio comes from one stretch of the
+/// Median ns per element of `a_in` of two loops over the same points (in two layouts: single
+/// points, or packets), interleaved run by run so that their ratio comes from one stretch of the
 /// machine's load.
 fn time_pair<A, B, OA: Default + Clone, OB: Default + Clone>(
     cfg: &Config,
@@ -250,14 +255,22 @@ fn on_all_cores<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync) -> Ve
 /// One row of the warp table: a sampler of the registry (the same samplers, at the same
 /// parameters, as the tests), timed over the batch with the warp inlined into the loop, with its
 /// accuracy.
-fn measure(cfg: &Config, s: Sampler, pts: &[Vec2], packets: &[Vec2x8], acc: Accuracy) -> Row {
+fn measure(
+    cfg: &Config,
+    s: Sampler,
+    pts: &[Vec2],
+    (packets, packets16): (&[Vec2x8], &[Vec2x16]),
+    acc: Accuracy,
+) -> Row {
     let ours = |us: &[Vec2], out: &mut [Vec3]| s.sample_all(us, out);
-    let (scalar_ns, x8_ns) = time_pair(
+    let x8 = |us: &[Vec2x8], out: &mut [Vec3x8]| s.sample_all(us, out);
+    let (scalar_ns, x8_ns) = time_pair(cfg, pts, packets, &ours, &x8);
+    let (x8_again, x16_ns) = time_pair(
         cfg,
-        pts,
         packets,
-        &ours,
-        &|us: &[Vec2x8], out: &mut [Vec3x8]| s.sample_all(us, out),
+        packets16,
+        &x8,
+        &|us: &[Vec2x16], out: &mut [Vec3x16]| s.sample_all(us, out),
     );
     // The ratio to the plain version comes from its own interleaved pair.
     let scalar_vs_plain = plain::loop_for(s).map(|plain| {
@@ -288,6 +301,9 @@ fn measure(cfg: &Config, s: Sampler, pts: &[Vec2], packets: &[Vec2x8], acc: Accu
         scalar_ns,
         scalar_vs_plain,
         x8_ns,
+        // This pair's times are per packet of eight: both loops cover the same samples.
+        x16_ns: x16_ns / 8.0,
+        x16_vs_x8: x8_again / x16_ns,
         max_abs_err: acc.max_abs_err,
         worst_u: acc.worst_u,
         plain_max_abs_err: acc.plain_max_abs_err,
@@ -455,6 +471,10 @@ fn main() {
         .chunks_exact(8)
         .map(|c| Vec2x8::from(<[Vec2; 8]>::try_from(c).unwrap()))
         .collect();
+    let packets16: Vec<Vec2x16> = pts
+        .chunks_exact(16)
+        .map(|c| Vec2x16::from(<[Vec2; 16]>::try_from(c).unwrap()))
+        .collect();
     let err_pts = error_points(cfg.quick);
 
     // Each table is printed as soon as it is measured, and kept for --markdown.
@@ -469,7 +489,7 @@ fn main() {
     let rows: Vec<Row> = samplers
         .into_iter()
         .zip(accuracies)
-        .map(|(s, acc)| measure(&cfg, s, &pts, &packets, acc))
+        .map(|(s, acc)| measure(&cfg, s, &pts, (&packets, &packets16), acc))
         .collect();
     show(table::warps(&cfg, &rows));
     show(table::prepared(&rows));
@@ -526,11 +546,13 @@ fn main() {
                 "warps",
                 rows.iter()
                     .map(|r| format!(
-                        "{{\"name\": \"{}\", \"scalar_ns\": {}, \"scalar_vs_plain\": {}, \"x8_ns\": {}, \"speedup\": {}, \"max_abs_err\": {}, \"plain_max_abs_err\": {}, \"max_pdf_rel_err\": {}, \"chi2_p\": {}, \"first_ns\": {}, \"further_ns\": {}}}",
+                        "{{\"name\": \"{}\", \"scalar_ns\": {}, \"scalar_vs_plain\": {}, \"x8_ns\": {}, \"x16_ns\": {}, \"x16_vs_x8\": {}, \"speedup\": {}, \"max_abs_err\": {}, \"plain_max_abs_err\": {}, \"max_pdf_rel_err\": {}, \"chi2_p\": {}, \"first_ns\": {}, \"further_ns\": {}}}",
                         esc(&r.name),
                         num(r.scalar_ns),
                         num(r.scalar_vs_plain.unwrap_or(f64::NAN)),
                         num(r.x8_ns),
+                        num(r.x16_ns),
+                        num(r.x16_vs_x8),
                         num(r.scalar_ns / r.x8_ns),
                         num(r.max_abs_err),
                         num(r.plain_max_abs_err.unwrap_or(f64::NAN)),

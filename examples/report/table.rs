@@ -109,7 +109,9 @@ pub fn warps(cfg: &Config, rows: &[Row]) -> Table {
         "Every sampler of `verify::registry`: the warps, the lights seen from the origin (set-up \
          paid at every sample) and the BSDFs.\n\
          Times: ns per sample on {POINTS} in-cache points, medians of runs in which the scalar and \
-         x8 loops alternate, so their ratio comes from one stretch of the machine's load.\n\
+         x8 loops alternate, so their ratio comes from one stretch of the machine's load; \
+         x16 / x8: the sixteen-wide loop's throughput over the eight-wide loop's, from their own \
+         alternating pair ({x16}).\n\
          vs plain: the scalar loop's time over that of the plain glam+std version of the same \
          formula (`examples/report/plain.rs`), timed as its own interleaved pair.\n\
          Errors: the worst over {random} random u, a {grid}² grid and the square's edges and \
@@ -118,7 +120,13 @@ pub fn warps(cfg: &Config, rows: &[Row]) -> Table {
          map (the spherical polygons); pdf errors where both instances are inside the support.\n\
          χ² p: Mitsuba's test on {chi2} samples; the Šidák level for α = 0.01 over these {tests} \
          tests is {:.1e}.",
-        sidak(tests)
+        sidak(tests),
+        x16 = if cfg!(target_feature = "avx512f") {
+            "one AVX-512 register per sixteen lanes"
+        } else {
+            "emulated: this build has no AVX-512, so `wide` runs each sixteen-wide operation as two \
+             eight-wide halves"
+        }
     );
     let head = [
         "sampler",
@@ -126,6 +134,8 @@ pub fn warps(cfg: &Config, rows: &[Row]) -> Table {
         "vs plain",
         "x8 ns",
         "speedup",
+        "x16 ns",
+        "x16 / x8",
         "max abs err",
         "plain err",
         "worst u",
@@ -140,6 +150,8 @@ pub fn warps(cfg: &Config, rows: &[Row]) -> Table {
             r.scalar_vs_plain.map_or("–".into(), |v| format!("{v:.2}×")),
             format!("{:.2}", r.x8_ns),
             ratio(r.scalar_ns, r.x8_ns),
+            format!("{:.2}", r.x16_ns),
+            format!("{:.2}×", r.x16_vs_x8),
             format!("{:.2e}", r.max_abs_err),
             r.plain_max_abs_err
                 .map_or("–".into(), |e| format!("{e:.2e}")),

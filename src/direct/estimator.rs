@@ -136,7 +136,8 @@ where
     /// Each lane's light choice from u: the index (as a float, exact below 2²⁴) and its
     /// probability.
     pub(super) fn choose(&self, u: L) -> (L, L) {
-        let mut pmf = [0.0f32; 8];
+        // Room for the widest packet's lanes.
+        let mut pmf = [0.0f32; 16];
         let index = L::from_fn(|i| {
             let c = self.lights.choose(u.lane(i));
             if let Some(p) = pmf.get_mut(i) {

@@ -4,12 +4,13 @@
 use glam::Vec3;
 
 use super::MAX_SAMPLES;
-use crate::lane::{F32x8, Lane, Lane32, Lanes, U32x8};
+use crate::lane::{F32x8, F32x16, Lane, Lane32, Lanes, U32x8, U32x16};
 use crate::math::Math;
 use crate::mis::Candidate;
 use crate::point::Point3;
 use crate::scene::{Light, LightChoice, PowerTable};
 use crate::x8::Vec3x8;
+use crate::x16::Vec3x16;
 
 /// A strategy of the lecture. Each spends N = `n_light + n_bsdf` samples ([`Config`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -214,17 +215,25 @@ impl<F: FnMut(F32x8, Vec3x8, Vec3x8) -> F32x8> Visibility<Vec3x8> for F {
     }
 }
 
+impl<F: FnMut(F32x16, Vec3x16, Vec3x16) -> F32x16> Visibility<Vec3x16> for F {
+    #[inline]
+    fn visible(&mut self, active: F32x16, from: Vec3x16, to: Vec3x16) -> F32x16 {
+        active & self(active, from, to)
+    }
+}
+
 mod sealed {
     pub trait Sealed {}
     impl Sealed for f32 {}
     impl Sealed for crate::lane::F32x8 {}
+    impl Sealed for crate::lane::F32x16 {}
 }
 
-/// The widths the estimator runs in: `f32` and [`F32x8`]. Per-lane work (the light choice) goes
+/// The widths the estimator runs in: `f32`, [`F32x8`] and [`F32x16`]. Per-lane work (the light choice) goes
 /// through the lanes one at a time ([`Lanes`](crate::lane::Lanes)); the accumulators of optimal MIS and RIS sum in
 /// the f64 lane of the same width ([`Widen`](crate::lane::Widen)).
 pub trait DirectLane: Math + Lane32 + Lanes<Scalar = f32> + sealed::Sealed {
-    /// The candidate index a RIS reservoir keeps per lane: `u32` or [`U32x8`].
+    /// The candidate index a RIS reservoir keeps per lane: `u32`, [`U32x8`] or [`U32x16`].
     type Index: Candidate<<Self::Wide as Lane>::Mask> + Default;
     /// Index `s` in every lane.
     fn index(s: u32) -> Self::Index;
@@ -252,6 +261,18 @@ impl DirectLane for F32x8 {
     }
     #[inline(always)]
     fn count(m: F32x8) -> u32 {
+        m.to_bitmask().count_ones()
+    }
+}
+
+impl DirectLane for F32x16 {
+    type Index = U32x16;
+    #[inline(always)]
+    fn index(s: u32) -> U32x16 {
+        U32x16::splat(s)
+    }
+    #[inline(always)]
+    fn count(m: F32x16) -> u32 {
         m.to_bitmask().count_ones()
     }
 }

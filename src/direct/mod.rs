@@ -3,10 +3,11 @@
 //!
 //! L(x, ωo) = Σⱼ ∫ f(ωo, ωi) Leⱼ V(x, xⱼ(ωi)) cos θ dωi,
 //!
-//! by every strategy the lecture compares ([`Strategy`]), in both widths: [`estimate`] on
-//! `Vec3` and on [`Vec3x8`](crate::x8::Vec3x8) (eight shading points, or eight estimates of one, in lock-step; lane
-//! *i* equals the scalar estimate of lane *i*'s inputs bit for bit, given the same samples and
-//! visibility, and lanes may choose different lights).
+//! by every strategy the lecture compares ([`Strategy`]), in every width: [`estimate`] on `Vec3`,
+//! on [`Vec3x8`](crate::x8::Vec3x8) and on [`Vec3x16`](crate::x16::Vec3x16) (eight or sixteen
+//! shading points, or estimates of one, in lock-step; lane *i* equals the scalar estimate of lane
+//! *i*'s inputs bit for bit, given the same samples and visibility, and lanes may choose
+//! different lights).
 //!
 //! # Inputs
 //!
@@ -18,7 +19,8 @@
 //!   [`PowerTable`](crate::scene::PowerTable). Every lane of a packet sees the same lights;
 //! - [`Samples`]: the u of sample s of the estimate, per pair of dimensions. [`Sequence`](crate::seq::Sequence) reads
 //!   the stateless Owen-scrambled Sobol or independent generators of [`seq`](crate::seq) at index
-//!   `first + s`; `rand_pcg::Pcg32` and [`Pcg32x8`](crate::rng::Pcg32x8) give their next values;
+//!   `first + s`; `rand_pcg::Pcg32`, [`Pcg32x8`](crate::rng::Pcg32x8) and
+//!   [`Pcg32x16`](crate::rng::Pcg32x16) give their next values;
 //! - [`Visibility`]: a callback from the shading point to a point on a light, `FnMut(from, to)
 //!   -> bool` for the scalar form and `FnMut(mask, from, to) -> mask` for packets (only lanes
 //!   of the mask ask; the estimator ignores the answer elsewhere). It is called only for

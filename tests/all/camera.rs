@@ -2,14 +2,13 @@
 //! filters' moments, decorrelated dimensions and pixels (with controls), and the documented
 //! shutter edge cases.
 
+use crate::common::lanes;
 use glam::Vec2;
 use mcsample::camera::{CameraSample, PixelFilter};
 use mcsample::seq::{
     self,
     quality::{is_elementary_net, net_violation},
 };
-use mcsample::verify::check_lanes;
-use mcsample::x8::U32x8;
 
 const SHUTTER: (f32, f32) = (0.25, 0.75);
 
@@ -30,25 +29,24 @@ fn packets_equal_scalars_bit_for_bit() {
         (0.0, f32::INFINITY),
     ];
     let pixels = [[0, 0], [1919, 1079], [u32::MAX, 7], [1 << 24, 3]];
+    let mut f = Vec::new();
     for (k, &shutter) in shutters.iter().enumerate() {
         for &pixel in &pixels {
             for filter in [PixelFilter::Box, PixelFilter::Tent] {
                 let seed = 17 * k as u32;
-                check_lanes::<u32, (Vec2, Vec2, f32)>(
+                lanes!(
+                    &mut f,
+                    &format!("{pixel:?} {filter:?} {shutter:?}"),
                     &indices,
-                    |i| {
-                        let s = CameraSample::<U32x8>::generate(pixel, i, seed, filter, shutter);
+                    |i: U| {
+                        let s = CameraSample::<U>::generate(pixel, i, seed, filter, shutter);
                         (s.film, s.lens, s.time)
-                    },
-                    |i| {
-                        let s = CameraSample::generate(pixel, i, seed, filter, shutter);
-                        (s.film, s.lens, s.time)
-                    },
-                )
-                .unwrap_or_else(|e| panic!("{pixel:?} {filter:?} {shutter:?}: {e}"));
+                    }
+                );
             }
         }
     }
+    assert!(f.is_empty(), "{}", f.join("\n"));
 }
 
 #[test]

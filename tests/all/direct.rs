@@ -14,6 +14,7 @@ use mcsample::verify::direct::{
     sphere_light_quadrature,
 };
 use mcsample::x8::{F32x8, U32x8, Vec3x8};
+use mcsample::x16::{F32x16, U32x16, Vec3x16};
 
 const INDEPENDENT: Generator = Generator::Independent;
 
@@ -557,102 +558,125 @@ fn bad_input_gives_zero_never_nan_in_both_widths() {
     }
 }
 
-/// Eight different shading points of a two-light scene, chosen by power, with occlusion.
-#[test]
-fn packets_equal_scalars_for_every_strategy() {
-    let lights = [
-        Light::from(SphereLight::new(
-            Vec3::new(0.5, 0.2, 3.0),
-            0.7,
-            Vec3::new(1.0, 0.8, 0.6),
-        )),
-        Light::from(RectangleLight::new(
-            Vec3::new(-2.0, -1.0, 2.0),
-            Vec3::new(0.0, 2.0, 0.0),
-            Vec3::new(1.5, 0.0, 0.0),
-            Vec3::new(0.5, 0.5, 2.0),
-        )),
-        Light::from(TriangleLight::new(
-            Vec3::new(1.0, -1.0, 1.0),
-            Vec3::new(2.0, -1.0, 1.2),
-            Vec3::new(1.5, 0.0, 1.5),
-            Vec3::splat(3.0),
-        )),
-    ];
-    let mut storage = [0.0; 3];
-    let table = PowerTable::new(&lights, &mut storage);
-    let lights = Lights::by_power(&lights, table);
-    let points: [ShadingPoint; 8] = core::array::from_fn(|i| {
-        let t = i as f32;
-        ShadingPoint {
-            p: Vec3::new(0.1 * t - 0.3, 0.05 * t, 0.0),
-            n: Vec3::new(0.05 * t, -0.03 * t, 1.0).normalize(),
-            wo: Vec3::new(0.3 - 0.1 * t, 0.2, 0.8).normalize(),
-        }
-    });
-    let materials: [Phong; 8] = core::array::from_fn(|i| {
-        Phong::new(
-            Vec3::splat(0.1 * i as f32),
-            Vec3::splat(0.5),
-            10.0 * (i + 1) as f32,
-        )
-    });
-    let phong8 = Phong::new(
-        Vec3x8::from(materials.map(|m| m.kd)),
-        Vec3x8::from(materials.map(|m| m.ks)),
-        F32x8::new(materials.map(|m| m.n)),
-    );
-    let at8 = ShadingPoint {
-        p: Vec3x8::from(points.map(|a| a.p)),
-        n: Vec3x8::from(points.map(|a| a.n)),
-        wo: Vec3x8::from(points.map(|a| a.wo)),
-    };
-    // 9 + 8 takes optimal MIS's cross-fitted path, with halves of unequal size.
-    for config in [
-        Config::new(3, 2),
-        Config::new(1, 4).with_roulette(0.5),
-        Config::new(9, 8),
-    ] {
-        for strategy in Strategy::ALL {
-            let firsts: [u32; 8] = core::array::from_fn(|i| 100 * i as u32);
-            let mut s8 = Sequence {
-                first: U32x8::new(firsts),
-                seed: 7,
-                generator: Generator::Sobol,
+/// N different shading points (one per lane of a packet of width N) of a three-light scene,
+/// chosen by power, with occlusion: every strategy's packet estimate equals the scalar estimates
+/// lane by lane.
+macro_rules! packets_equal_scalars {
+    ($test:ident, $n:literal, $f:ty, $u:ty, $v3:ty) => {
+        #[test]
+        fn $test() {
+            let lights = [
+                Light::from(SphereLight::new(
+                    Vec3::new(0.5, 0.2, 3.0),
+                    0.7,
+                    Vec3::new(1.0, 0.8, 0.6),
+                )),
+                Light::from(RectangleLight::new(
+                    Vec3::new(-2.0, -1.0, 2.0),
+                    Vec3::new(0.0, 2.0, 0.0),
+                    Vec3::new(1.5, 0.0, 0.0),
+                    Vec3::new(0.5, 0.5, 2.0),
+                )),
+                Light::from(TriangleLight::new(
+                    Vec3::new(1.0, -1.0, 1.0),
+                    Vec3::new(2.0, -1.0, 1.2),
+                    Vec3::new(1.5, 0.0, 1.5),
+                    Vec3::splat(3.0),
+                )),
+            ];
+            let mut storage = [0.0; 3];
+            let table = PowerTable::new(&lights, &mut storage);
+            let lights = Lights::by_power(&lights, table);
+            let points: [ShadingPoint; $n] = core::array::from_fn(|i| {
+                let t = i as f32;
+                ShadingPoint {
+                    p: Vec3::new(0.1 * t - 0.3, 0.05 * t, 0.0),
+                    n: Vec3::new(0.05 * t, -0.03 * t, 1.0).normalize(),
+                    wo: Vec3::new(0.3 - 0.1 * t, 0.2, 0.8).normalize(),
+                }
+            });
+            let materials: [Phong; $n] = core::array::from_fn(|i| {
+                Phong::new(
+                    Vec3::splat(0.1 * i as f32),
+                    Vec3::splat(0.5),
+                    10.0 * (i + 1) as f32,
+                )
+            });
+            let phong8 = Phong::new(
+                <$v3>::from(materials.map(|m| m.kd)),
+                <$v3>::from(materials.map(|m| m.ks)),
+                <$f>::new(materials.map(|m| m.n)),
+            );
+            let at8 = ShadingPoint {
+                p: <$v3>::from(points.map(|a| a.p)),
+                n: <$v3>::from(points.map(|a| a.n)),
+                wo: <$v3>::from(points.map(|a| a.wo)),
             };
-            let mut vis8 = |m: F32x8, _: Vec3x8, to: Vec3x8| m & to.y.simd_lt(F32x8::splat(0.5));
-            let e8 = direct::estimate(strategy, &lights, &phong8, at8, config, &mut s8, &mut vis8);
-            let mut rays = 0;
-            for i in 0..8 {
-                let mut s = Sequence {
-                    first: firsts[i],
-                    seed: 7,
-                    generator: Generator::Sobol,
-                };
-                let mut vis = |_: Vec3, to: Vec3| to.y < 0.5;
-                let e = direct::estimate(
-                    strategy,
-                    &lights,
-                    &materials[i],
-                    points[i],
-                    config,
-                    &mut s,
-                    &mut vis,
-                );
-                let lane = e8.radiance.lane(i);
-                assert_eq!(
-                    lane.to_array().map(f32::to_bits),
-                    e.radiance.to_array().map(f32::to_bits),
-                    "{} lane {i}: {lane} vs {}",
-                    strategy.name(),
-                    e.radiance
-                );
-                rays += e.shadow_rays;
+            // 9 + 8 takes optimal MIS's cross-fitted path, with halves of unequal size.
+            for config in [
+                Config::new(3, 2),
+                Config::new(1, 4).with_roulette(0.5),
+                Config::new(9, 8),
+            ] {
+                for strategy in Strategy::ALL {
+                    let firsts: [u32; $n] = core::array::from_fn(|i| 100 * i as u32);
+                    let mut s8 = Sequence {
+                        first: <$u>::new(firsts),
+                        seed: 7,
+                        generator: Generator::Sobol,
+                    };
+                    let mut vis8 = |m: $f, _: $v3, to: $v3| m & to.y.simd_lt(<$f>::splat(0.5));
+                    let e8 = direct::estimate(
+                        strategy, &lights, &phong8, at8, config, &mut s8, &mut vis8,
+                    );
+                    let mut rays = 0;
+                    for i in 0..$n {
+                        let mut s = Sequence {
+                            first: firsts[i],
+                            seed: 7,
+                            generator: Generator::Sobol,
+                        };
+                        let mut vis = |_: Vec3, to: Vec3| to.y < 0.5;
+                        let e = direct::estimate(
+                            strategy,
+                            &lights,
+                            &materials[i],
+                            points[i],
+                            config,
+                            &mut s,
+                            &mut vis,
+                        );
+                        let lane = e8.radiance.lane(i);
+                        assert_eq!(
+                            lane.to_array().map(f32::to_bits),
+                            e.radiance.to_array().map(f32::to_bits),
+                            "{} lane {i}: {lane} vs {}",
+                            strategy.name(),
+                            e.radiance
+                        );
+                        rays += e.shadow_rays;
+                    }
+                    assert_eq!(rays, e8.shadow_rays, "{}", strategy.name());
+                }
             }
-            assert_eq!(rays, e8.shadow_rays, "{}", strategy.name());
         }
-    }
+    };
 }
+
+packets_equal_scalars!(
+    packets_equal_scalars_for_every_strategy,
+    8,
+    F32x8,
+    U32x8,
+    Vec3x8
+);
+packets_equal_scalars!(
+    sixteen_lanes_equal_scalars_for_every_strategy,
+    16,
+    F32x16,
+    U32x16,
+    Vec3x16
+);
 
 #[test]
 fn pcg_sources_agree_across_widths() {

@@ -8,10 +8,11 @@ use std::boxed::Box;
 use std::vec::Vec;
 
 use super::{ShapeFacts, lanes1, lanes3, light, radius_over_distance};
+use crate::lane::{Lanes, V3};
+use crate::math::Math;
 use crate::scene::{AnyShape, Disk};
 use crate::verify::registry::{Param, TestDomain};
 use crate::verify::{Cap, PlanarLight};
-use crate::x8::Vec3x8;
 
 impl ShapeFacts for Disk {
     fn ray(&self, p: DVec3, w: DVec3) -> Option<f64> {
@@ -100,7 +101,7 @@ impl ShapeFacts for Disk {
         )
     }
 
-    fn pack(s: &[Self; 8]) -> Option<AnyShape<Vec3x8>> {
+    fn pack<L: Math + Lanes<Scalar = f32>>(s: &[Self]) -> Option<AnyShape<V3<L>>> {
         Some(AnyShape::Disk(Disk {
             center: lanes3(s, |x| x.center),
             normal: lanes3(s, |x| x.normal),

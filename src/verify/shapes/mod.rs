@@ -17,8 +17,9 @@ use std::vec::Vec;
 
 use super::registry::{LightSampler, Param, Sampler, TestDomain};
 use super::{Cap, PlanarLight};
+use crate::lane::{Lanes, V3};
+use crate::math::Math;
 use crate::scene::AnyShape;
-use crate::x8::{F32x8, Vec3x8};
 
 /// The f64 facts of a light shape (scalar f32 geometry), seen from shading point `p`.
 pub trait ShapeFacts {
@@ -45,9 +46,9 @@ pub trait ShapeFacts {
     /// The registry's evidence for a light of this shape seen from the origin: the parameter the
     /// sweep and the fuzz targets vary, and the domain of its χ² test.
     fn evidence(&self) -> (Param, TestDomain);
-    /// Eight shapes of this kind as one packet shape, lane i shape i; `None` if they are not all
-    /// of one kind.
-    fn pack(shapes: &[Self; 8]) -> Option<AnyShape<Vec3x8>>
+    /// Shapes of this kind as one packet shape of lane `L`, lane i shape `i mod shapes.len()`;
+    /// `None` if they are not all of one kind, or there are none.
+    fn pack<L: Math + Lanes<Scalar = f32>>(shapes: &[Self]) -> Option<AnyShape<V3<L>>>
     where
         Self: Sized;
 }
@@ -57,14 +58,18 @@ fn light(shape: impl Into<AnyShape>) -> Sampler {
     Sampler::Light(LightSampler(shape.into()))
 }
 
-/// Lane i of the packet is `f(shapes[i])`.
-fn lanes3<S>(shapes: &[S; 8], f: impl Fn(&S) -> Vec3) -> Vec3x8 {
-    Vec3x8::from(core::array::from_fn::<Vec3, 8, _>(|i| f(&shapes[i])))
+/// Lane i of the packet is `f(shapes[i mod len])` (`shapes` is not empty).
+fn lanes3<S, L: Lanes<Scalar = f32>>(shapes: &[S], f: impl Fn(&S) -> Vec3) -> V3<L> {
+    V3::new(
+        lanes1(shapes, |s| f(s).x),
+        lanes1(shapes, |s| f(s).y),
+        lanes1(shapes, |s| f(s).z),
+    )
 }
 
-/// Lane i of the packet is `f(shapes[i])`.
-fn lanes1<S>(shapes: &[S; 8], f: impl Fn(&S) -> f32) -> F32x8 {
-    F32x8::from(core::array::from_fn::<f32, 8, _>(|i| f(&shapes[i])))
+/// Lane i of the packet is `f(shapes[i mod len])` (`shapes` is not empty).
+fn lanes1<S, L: Lanes<Scalar = f32>>(shapes: &[S], f: impl Fn(&S) -> f32) -> L {
+    L::from_fn(|i| f(&shapes[i % shapes.len()]))
 }
 
 /// Points along each edge of a convex polygon, turned across the edge's plane through `p` by
@@ -128,15 +133,14 @@ macro_rules! any_shape_facts {
             fn evidence(&self) -> (Param, TestDomain) {
                 match self { $(AnyShape::$name(s) => s.evidence(),)* }
             }
-            fn pack(shapes: &[Self; 8]) -> Option<AnyShape<Vec3x8>> {
-                match shapes[0] {
-                    $(AnyShape::$name(first) => {
-                        let mut each = [first; 8];
-                        for (e, s) in each.iter_mut().zip(shapes) {
-                            let AnyShape::$name(x) = s else { return None };
-                            *e = *x;
-                        }
-                        ShapeFacts::pack(&each)
+            fn pack<L: Math + Lanes<Scalar = f32>>(shapes: &[Self]) -> Option<AnyShape<V3<L>>> {
+                match shapes.first()? {
+                    $(AnyShape::$name(_) => {
+                        let each = shapes
+                            .iter()
+                            .map(|s| match s { AnyShape::$name(x) => Some(*x), _ => None })
+                            .collect::<Option<Vec<_>>>()?;
+                        ShapeFacts::pack::<L>(&each)
                     })*
                 }
             }

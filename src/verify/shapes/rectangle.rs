@@ -6,10 +6,11 @@ use std::boxed::Box;
 use std::vec::Vec;
 
 use super::{ShapeFacts, edge_points, lanes3, light, plane_tolerance};
+use crate::lane::{Lanes, V3};
+use crate::math::Math;
 use crate::scene::{AnyShape, Rectangle};
 use crate::verify::registry::{Param, TestDomain};
 use crate::verify::{Cap, PlanarLight};
-use crate::x8::Vec3x8;
 
 impl ShapeFacts for Rectangle {
     fn ray(&self, p: DVec3, w: DVec3) -> Option<f64> {
@@ -80,7 +81,7 @@ impl ShapeFacts for Rectangle {
         )
     }
 
-    fn pack(s: &[Self; 8]) -> Option<AnyShape<Vec3x8>> {
+    fn pack<L: Math + Lanes<Scalar = f32>>(s: &[Self]) -> Option<AnyShape<V3<L>>> {
         Some(AnyShape::Rectangle(Rectangle {
             corner: lanes3(s, |x| x.corner),
             ex: lanes3(s, |x| x.ex),

@@ -8,10 +8,11 @@ use std::boxed::Box;
 use std::vec::Vec;
 
 use super::{ShapeFacts, lanes1, lanes3, light, radius_over_distance};
+use crate::lane::{Lanes, V3};
+use crate::math::Math;
 use crate::scene::{AnyShape, Sphere};
 use crate::verify::registry::{Param, TestDomain};
 use crate::verify::{Cap, PlanarLight};
-use crate::x8::Vec3x8;
 
 impl ShapeFacts for Sphere {
     fn ray(&self, p: DVec3, w: DVec3) -> Option<f64> {
@@ -95,7 +96,7 @@ impl ShapeFacts for Sphere {
         )
     }
 
-    fn pack(s: &[Self; 8]) -> Option<AnyShape<Vec3x8>> {
+    fn pack<L: Math + Lanes<Scalar = f32>>(s: &[Self]) -> Option<AnyShape<V3<L>>> {
         Some(AnyShape::Sphere(Sphere {
             center: lanes3(s, |x| x.center),
             radius: lanes1(s, |x| x.radius),

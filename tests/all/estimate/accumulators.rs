@@ -4,8 +4,7 @@
 
 use crate::common::TestRng;
 use mcsample::estimate::{self, MeanVar, ROULETTE_Q_MIN};
-use mcsample::lane::F32x8;
-use mcsample::lane::{F64x8, Widen};
+use mcsample::lane::{F32x8, F32x16, F64x8, F64x16, Widen};
 
 /// The reference: the mean by Neumaier's compensated sum (a plain f64 sum of 10⁷ values near
 /// 1e9 loses the fractions: its ulp at 1e16 is 2), then Σ(x − mean)².
@@ -122,30 +121,36 @@ fn merge_equals_one_stream_and_counts_do_not_wrap() {
     );
 }
 
-/// The packet accumulators: lane i equals a scalar accumulator of lane i's values bit for bit,
-/// and the reduction matches one scalar accumulator of every value.
-#[test]
-fn packet_accumulators() {
-    let mut rng = TestRng::new(22);
-    let mut packet = MeanVar::<F64x8>::new();
-    let mut lanes = [MeanVar::new(); 8];
-    let mut all = MeanVar::new();
-    for _ in 0..10_000 {
-        let x: [f32; 8] = core::array::from_fn(|_| rng.u01() * 100.0 + 1e4);
-        packet.push(F32x8::new(x).widen());
-        for i in 0..8 {
-            lanes[i].push(x[i] as f64);
-            all.push(x[i] as f64);
+/// The packet accumulators of both widths: lane i equals a scalar accumulator of lane i's
+/// values bit for bit, and the reduction matches one scalar accumulator of every value.
+macro_rules! packet_accumulators {
+    ($test:ident, $n:literal, $f:ty, $w:ty) => {
+        #[test]
+        fn $test() {
+            let mut rng = TestRng::new(22);
+            let mut packet = MeanVar::<$w>::new();
+            let mut lanes = [MeanVar::new(); $n];
+            let mut all = MeanVar::new();
+            for _ in 0..10_000 {
+                let x: [f32; $n] = core::array::from_fn(|_| rng.u01() * 100.0 + 1e4);
+                packet.push(<$f>::new(x).widen());
+                for i in 0..$n {
+                    lanes[i].push(x[i] as f64);
+                    all.push(x[i] as f64);
+                }
+            }
+            for (i, lane) in lanes.iter().enumerate() {
+                assert_eq!(packet.lane(i), *lane);
+            }
+            let r = packet.reduce();
+            assert_eq!(r.count(), all.count());
+            assert!(rel(r.mean(), all.mean()) < 1e-14);
+            assert!(rel(r.variance(), all.variance()) < 1e-10);
         }
-    }
-    for (i, lane) in lanes.iter().enumerate() {
-        assert_eq!(packet.lane(i), *lane);
-    }
-    let r = packet.reduce();
-    assert_eq!(r.count(), all.count());
-    assert!(rel(r.mean(), all.mean()) < 1e-14);
-    assert!(rel(r.variance(), all.variance()) < 1e-10);
+    };
 }
+packet_accumulators!(packet_accumulators, 8, F32x8, F64x8);
+packet_accumulators!(sixteen_lane_accumulators, 16, F32x16, F64x16);
 
 /// Roulette's values, clamps and bad inputs, in both widths.
 #[test]
@@ -164,6 +169,8 @@ fn roulette_values_and_bad_inputs() {
         let got = estimate::roulette(q, u);
         assert_eq!(got, want, "roulette({q}, {u})");
         let lanes = estimate::roulette(F32x8::splat(q), F32x8::splat(u)).to_array();
+        assert!(lanes.iter().all(|l| l.to_bits() == got.to_bits()));
+        let lanes = estimate::roulette(F32x16::splat(q), F32x16::splat(u)).to_array();
         assert!(lanes.iter().all(|l| l.to_bits() == got.to_bits()));
         assert_eq!(estimate::roulette(q as f64, u as f64) as f32, want);
     }

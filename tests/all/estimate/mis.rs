@@ -2,7 +2,7 @@
 //! the error against the f64 weight of the same inputs, packets against scalars bit for bit, the
 //! N-technique forms, and one-sample MIS's choice and rescaled u.
 
-use crate::common::TestRng;
+use crate::common::{TestRng, lanes};
 use mcsample::lane::F32x8;
 use mcsample::mis;
 
@@ -236,107 +236,57 @@ fn packets_equal_scalars() {
     }
 }
 
-/// The N-technique forms: the rules, a partition of unity within N ulp, and the f64 weights.
+/// The weights and the one-sample choice in both packet widths, against the scalar form, on
+/// the same draws (NaN, negative, zero, ∞, subnormal and twelve decades of pdfs).
 #[test]
-fn n_technique_weights() {
-    let inf = f32::INFINITY;
-    assert_eq!(
-        mis::balance_n([1.0, 1.0, 1.0], [1.0, inf, inf]),
-        [0.0, 0.5, 0.5]
-    );
-    assert_eq!(
-        mis::power_n([1.0, 0.0, 1.0], [2.0, 5.0, 2.0]),
-        [0.5, 0.0, 0.5]
-    );
-    assert_eq!(mis::balance_n([1.0, 1.0], [0.0, 0.0]), [0.0, 0.0]);
-    assert_eq!(
-        mis::balance_n([1.0, 1.0, 1.0], [1.0, f32::NAN, 1.0]),
-        [0.0; 3]
-    );
-    assert_eq!(mis::power_n([1.0; 2], [1e20, 1e20]), [0.5, 0.5]);
-    assert_eq!(mis::power_n([1.0; 2], [1e-25, 1e-25]), [0.5, 0.5]);
-
+fn weights_equal_scalars_in_both_widths() {
     let mut rng = TestRng::new(12);
-    for _ in 0..200_000 {
-        let n: [f32; 4] = core::array::from_fn(|_| count(&mut rng));
-        let p: [f32; 4] = core::array::from_fn(|_| pdf(&mut rng));
-        let a: [f64; 4] = core::array::from_fn(|k| n[k] as f64 * p[k] as f64);
-        for (beta, w) in [(1, mis::balance_n(n, p)), (2, mis::power_n(n, p))] {
-            let sum: f32 = w.iter().sum();
-            if a.iter().any(|&x| x > 0.0) {
-                assert!(
-                    (sum - 1.0).abs() <= 4.0 * f32::EPSILON,
-                    "{n:?} {p:?}: {w:?}"
-                );
-            } else {
-                assert_eq!(sum, 0.0);
-            }
-            if a.iter().all(|x| x.is_finite()) && a.iter().any(|&x| x > 0.0) {
-                let total: f64 = a.iter().map(|x| x.powi(beta)).sum();
-                for k in 0..4 {
-                    let want = a[k].powi(beta) / total;
-                    assert!(
-                        (w[k] as f64 - want).abs() <= 4e-7 * want.max(1e-30) + 1e-37,
-                        "β {beta} {n:?} {p:?}: {w:?} weight {k} against {want}"
-                    );
-                }
-            }
-        }
-    }
-}
-
-/// One-sample MIS: on a regular grid of M values of u, technique i is chosen ⌊M·cᵢ⌋ or
-/// ⌈M·cᵢ⌉ times, and its rescaled u values are again a regular grid of [0, 1) (one per cell of
-/// width 1/count), which is what keeps a stratified u stratified.
-#[test]
-fn one_sample_choice_and_rescaled_u() {
-    let c = [0.5f32, 0.0, 0.2, 0.3];
-    let m = 1000;
-    let mut chosen: [Vec<f32>; 4] = Default::default();
-    let mut original: [Vec<f32>; 4] = Default::default();
-    for j in 0..m {
-        let u = (j as f32 + 0.5) / m as f32;
-        let pick = mis::one_sample(c, u);
-        let i = pick.index as usize;
-        assert_eq!(pick.probability, c[i] / c.iter().sum::<f32>());
-        assert!((0.0..1.0).contains(&pick.u));
-        chosen[i].push(pick.u);
-        original[i].push(u);
-    }
-    let stratified = |v: &[f32]| {
-        let n = v.len();
-        let mut cells = vec![0; n];
-        for &x in v {
-            cells[((x * n as f32) as usize).min(n - 1)] += 1;
-        }
-        cells.iter().all(|&k| k == 1)
+    let mut draw = || match rng.below(16) {
+        0 => f32::NAN,
+        1 => -1.0,
+        _ => pdf(&mut rng),
     };
-    for i in 0..4 {
-        let want = m as f32 * c[i];
-        assert!(
-            (chosen[i].len() as f32 - want).abs() <= 1.0,
-            "{i}: {}",
-            chosen[i].len()
-        );
-        assert!(
-            stratified(&chosen[i]),
-            "technique {i}'s rescaled u are not stratified"
-        );
-        // Negative control: the u before rescaling is not stratified over [0, 1).
-        if !chosen[i].is_empty() {
-            assert!(!stratified(&original[i]));
-        }
-    }
-    // Bad inputs: no positive probability, NaN u, u past 1.
-    let none = mis::one_sample([0.0f32, -1.0, f32::NAN], 0.3);
-    assert_eq!((none.index, none.probability, none.u), (0, 0.0, 0.3));
-    let nan_u = mis::one_sample([1.0f32, 1.0], f32::NAN);
-    assert_eq!((nan_u.index, nan_u.u), (0, 0.0));
-    let inf = mis::one_sample([f32::INFINITY, 1.0], 0.3);
-    assert_eq!((inf.index, inf.probability), (1, 1.0));
-    let huge = mis::one_sample([f32::MAX, f32::MAX], 0.75);
-    assert_eq!((huge.index, huge.probability, huge.u), (1, 0.5, 0.5));
-    let top = mis::one_sample([1.0f32, 1.0, 0.0], 1.0);
-    assert_eq!(top.index, 1);
-    assert!(top.u < 1.0);
+    type Five = ((f32, f32), (f32, f32, f32));
+    let xs: Vec<Five> = (0..1 << 14)
+        .map(|_| ((draw(), draw()), (draw(), draw(), draw())))
+        .collect();
+    let f = &mut Vec::new();
+    lanes!(f, "balance", &xs, |((a, b), (c, d, _)): (
+        (L, L),
+        (L, L, L)
+    )| mis::balance(a, b, c, d));
+    lanes!(f, "power", &xs, |((a, b), (c, d, _)): (
+        (L, L),
+        (L, L, L)
+    )| mis::power(a, b, c, d));
+    lanes!(f, "maximum", &xs, |((a, b), (c, d, _)): (
+        (L, L),
+        (L, L, L)
+    )| mis::maximum(a, b, c, d));
+    lanes!(f, "cutoff", &xs, |((a, b), (c, d, e)): (
+        (L, L),
+        (L, L, L)
+    )| mis::cutoff(a, b, c, d, e));
+    lanes!(f, "power_n", &xs, |((a, b), (c, d, e)): (
+        (L, L),
+        (L, L, L)
+    )| {
+        let [x, y, z] = mis::power_n([a, c, e], [b, d, e]);
+        (x, y, z)
+    });
+    lanes!(f, "balance_n", &xs, |((a, b), (c, d, e)): (
+        (L, L),
+        (L, L, L)
+    )| {
+        let [x, y, z] = mis::balance_n([a, c, e], [b, d, e]);
+        (x, y, z)
+    });
+    lanes!(f, "one_sample", &xs, |((a, b), (c, d, _)): (
+        (L, L),
+        (L, L, L)
+    )| {
+        let pick = mis::one_sample([a, b, c], d);
+        (pick.index, pick.probability, pick.u)
+    });
+    assert!(f.is_empty(), "{}", f.join("\n"));
 }

@@ -13,6 +13,8 @@ use std::f64::consts::PI;
 
 use crate::common::TestRng;
 use glam::{DVec2, DVec3, Vec2, Vec3};
+use mcsample::lane::{Lanes, V3};
+use mcsample::math::Math;
 use mcsample::scene::{
     AnyShape, DiskLight, Emitter, Lambert, Light, LightChoice, Phong, PowerTable, RectangleLight,
     Sphere, SphereLight, TriangleLight, luminance,
@@ -20,6 +22,7 @@ use mcsample::scene::{
 use mcsample::verify::{Cap, ChiSquare, PlanarLight, ShapeFacts, sidak_alpha};
 use mcsample::warp::ONE_MINUS_EPS;
 use mcsample::x8::{F32x8, Vec2x8, Vec3x8};
+use mcsample::x16::{Vec2x16, Vec3x16};
 
 /// A light, the shading point, a name, and whether it is a proper light there (every sample
 /// must then be kept).
@@ -680,71 +683,81 @@ fn chi_square_of_every_configuration() {
     }
 }
 
-/// Eight lanes of different lights and shading points equal the eight scalar calls, bit for
-/// bit: sample, pdf, hit, and the area sample.
-#[test]
-fn packets_equal_scalars() {
-    let cs = cases();
-    let mut rng = TestRng::new(7);
-    // Group the configurations by kind, eight lanes at a time (cycling within a kind).
-    for kind in ["sphere", "disk", "triangle", "rectangle"] {
-        let group: Vec<&Case> = cs.iter().filter(|c| c.name.starts_with(kind)).collect();
-        for round in 0..64 {
-            let pick: Vec<&Case> = (0..8).map(|i| group[(round + i) % group.len()]).collect();
-            let u: [Vec2; 8] = std::array::from_fn(|_| rng.u2());
-            let p: [Vec3; 8] = std::array::from_fn(|i| pick[i].p);
-            let (u8, p8) = (Vec2x8::from(u), Vec3x8::from(p));
-            let l8 = pack(&pick.iter().map(|c| c.light).collect::<Vec<_>>());
-            let s8 = l8.sample(p8, u8);
-            let wi8 = s8.wi;
-            let pdf8 = l8.pdf(p8, wi8).to_array();
-            let hit8 = l8.hit(p8, wi8).to_array();
-            let a8 = l8.sample_area(p8, u8);
-            for i in 0..8 {
-                let (l, pi, ui) = (pick[i].light, p[i], u[i]);
-                let s = l.sample(pi, ui);
-                let same = |a: Vec3, b: Vec3| {
-                    a.to_array().map(f32::to_bits) == b.to_array().map(f32::to_bits)
-                };
-                assert!(
-                    same(s.wi, wi8.lane(i))
-                        && s.pdf.to_bits() == s8.pdf.to_array()[i].to_bits()
-                        && s.dist.to_bits() == s8.dist.to_array()[i].to_bits()
-                        && same(s.le, s8.le.lane(i)),
-                    "{}: lane {i} sample differs",
-                    pick[i].name
-                );
-                assert_eq!(
-                    l.pdf(pi, s.wi).to_bits(),
-                    pdf8[i].to_bits(),
-                    "{}: pdf",
-                    pick[i].name
-                );
-                assert_eq!(
-                    l.hit(pi, s.wi).to_bits(),
-                    hit8[i].to_bits(),
-                    "{}: hit",
-                    pick[i].name
-                );
-                let a = l.sample_area(pi, ui);
-                assert!(
-                    same(a.p, a8.p.lane(i))
-                        && same(a.n, a8.n.lane(i))
-                        && a.pdf.to_bits() == a8.pdf.to_array()[i].to_bits(),
-                    "{}: area sample differs",
-                    pick[i].name
-                );
+/// N lanes (a packet's width) of different lights and shading points equal the N scalar calls,
+/// bit for bit: sample, pdf, hit, and the area sample.
+macro_rules! packets_equal_scalars {
+    ($test:ident, $n:literal, $v2:ty, $v3:ty) => {
+        #[test]
+        fn $test() {
+            let cs = cases();
+            let mut rng = TestRng::new(7);
+            // Group the configurations by kind, N lanes at a time (cycling within a kind).
+            for kind in ["sphere", "disk", "triangle", "rectangle"] {
+                let group: Vec<&Case> = cs.iter().filter(|c| c.name.starts_with(kind)).collect();
+                for round in 0..64 {
+                    let pick: Vec<&Case> =
+                        (0..$n).map(|i| group[(round + i) % group.len()]).collect();
+                    let u: [Vec2; $n] = std::array::from_fn(|_| rng.u2());
+                    let p: [Vec3; $n] = std::array::from_fn(|i| pick[i].p);
+                    let (u8, p8) = (<$v2>::from(u), <$v3>::from(p));
+                    let l8 = pack(&pick.iter().map(|c| c.light).collect::<Vec<_>>());
+                    let _: &Light<$v3> = &l8;
+                    let s8 = l8.sample(p8, u8);
+                    let wi8 = s8.wi;
+                    let pdf8 = l8.pdf(p8, wi8).to_array();
+                    let hit8 = l8.hit(p8, wi8).to_array();
+                    let a8 = l8.sample_area(p8, u8);
+                    for i in 0..$n {
+                        let (l, pi, ui) = (pick[i].light, p[i], u[i]);
+                        let s = l.sample(pi, ui);
+                        let same = |a: Vec3, b: Vec3| {
+                            a.to_array().map(f32::to_bits) == b.to_array().map(f32::to_bits)
+                        };
+                        assert!(
+                            same(s.wi, wi8.lane(i))
+                                && s.pdf.to_bits() == s8.pdf.to_array()[i].to_bits()
+                                && s.dist.to_bits() == s8.dist.to_array()[i].to_bits()
+                                && same(s.le, s8.le.lane(i)),
+                            "{}: lane {i} sample differs",
+                            pick[i].name
+                        );
+                        assert_eq!(
+                            l.pdf(pi, s.wi).to_bits(),
+                            pdf8[i].to_bits(),
+                            "{}: pdf",
+                            pick[i].name
+                        );
+                        assert_eq!(
+                            l.hit(pi, s.wi).to_bits(),
+                            hit8[i].to_bits(),
+                            "{}: hit",
+                            pick[i].name
+                        );
+                        let a = l.sample_area(pi, ui);
+                        assert!(
+                            same(a.p, a8.p.lane(i))
+                                && same(a.n, a8.n.lane(i))
+                                && a.pdf.to_bits() == a8.pdf.to_array()[i].to_bits(),
+                            "{}: area sample differs",
+                            pick[i].name
+                        );
+                    }
+                }
             }
         }
-    }
+    };
 }
 
-/// Eight lights of one kind as one packet light.
-fn pack(ls: &[Light]) -> Light<Vec3x8> {
-    let shapes: [AnyShape; 8] = std::array::from_fn(|i| ls[i].shape);
+packets_equal_scalars!(packets_equal_scalars, 8, Vec2x8, Vec3x8);
+packets_equal_scalars!(sixteen_lanes_equal_scalars, 16, Vec2x16, Vec3x16);
+
+/// Lights of one kind as one packet light, lane i light i.
+fn pack<L: Math + Lanes<Scalar = f32>>(ls: &[Light]) -> Light<V3<L>> {
+    let shapes: Vec<AnyShape> = ls.iter().map(|l| l.shape).collect();
+    let lane = |k: fn(Vec3) -> f32| L::from_fn(|i| k(ls[i].le));
     Emitter {
-        shape: AnyShape::pack(&shapes).expect("eight lights of one kind"),
-        le: Vec3x8::from(std::array::from_fn::<Vec3, 8, _>(|i| ls[i].le)),
+        shape: AnyShape::pack::<L>(&shapes).expect("lights of one kind"),
+        le: V3::new(lane(|v| v.x), lane(|v| v.y), lane(|v| v.z)),
     }
 }
 

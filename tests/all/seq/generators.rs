@@ -4,13 +4,12 @@
 //! behaviour on extreme inputs.
 
 use super::golden::{GOLDEN_INDICES, GOLDEN_SEQ};
-use crate::common::TestRng;
+use crate::common::{TestRng, lanes};
 use glam::Vec2;
 use mcsample::seq::{
     self, MAX_STRATA,
     quality::{NetViolation, net_violation},
 };
-use mcsample::verify::check_lanes;
 
 // ---------------------------------------------------------------------------------------------
 // An independent Sobol reference, written the textbook way: natural bit order, direction numbers
@@ -198,45 +197,21 @@ fn packets_equal_scalars_bit_for_bit() {
             counts[(round * 7 + 3) % counts.len()] % 300,
         );
         let ctx = format!("dim {d} seed {s} n {n} grid {nx}×{ny}");
-        let one = |e| panic!("{ctx}: {e}");
-        check_lanes::<u32, f32>(
-            &indices,
-            |i| seq::stratified(i, n, d, s),
-            |i| seq::stratified(i, n, d, s),
-        )
-        .unwrap_or_else(one);
-        check_lanes::<u32, f32>(
-            &indices,
-            |i| seq::latin_hypercube(i, n, d, s),
-            |i| seq::latin_hypercube(i, n, d, s),
-        )
-        .unwrap_or_else(one);
-        check_lanes::<u32, Vec2>(
-            &indices,
-            |i| seq::jittered_2d(i, nx, ny, d, s),
-            |i| seq::jittered_2d(i, nx, ny, d, s),
-        )
-        .unwrap_or_else(one);
-        check_lanes::<u32, Vec2>(
-            &indices,
-            |i| seq::multi_jittered_2d(i, nx, ny, d, s),
-            |i| seq::multi_jittered_2d(i, nx, ny, d, s),
-        )
-        .unwrap_or_else(one);
-        check_lanes::<u32, Vec2>(
-            &indices,
-            |i| seq::cmj_2d(i, nx, ny, d, s),
-            |i| seq::cmj_2d(i, nx, ny, d, s),
-        )
-        .unwrap_or_else(one);
-        check_lanes::<u32, f32>(&indices, |i| seq::sobol(i, d, s), |i| seq::sobol(i, d, s))
-            .unwrap_or_else(one);
-        check_lanes::<u32, Vec2>(
-            &indices,
-            |i| seq::sobol_2d(i, d, s),
-            |i| seq::sobol_2d(i, d, s),
-        )
-        .unwrap_or_else(one);
+        let mut f = Vec::new();
+        lanes!(&mut f, &ctx, &indices, |i: U| seq::stratified(i, n, d, s));
+        lanes!(&mut f, &ctx, &indices, |i: U| seq::latin_hypercube(
+            i, n, d, s
+        ));
+        lanes!(&mut f, &ctx, &indices, |i: U| seq::jittered_2d(
+            i, nx, ny, d, s
+        ));
+        lanes!(&mut f, &ctx, &indices, |i: U| seq::multi_jittered_2d(
+            i, nx, ny, d, s
+        ));
+        lanes!(&mut f, &ctx, &indices, |i: U| seq::cmj_2d(i, nx, ny, d, s));
+        lanes!(&mut f, &ctx, &indices, |i: U| seq::sobol(i, d, s));
+        lanes!(&mut f, &ctx, &indices, |i: U| seq::sobol_2d(i, d, s));
+        assert!(f.is_empty(), "{}", f.join("\n"));
     }
 }
 

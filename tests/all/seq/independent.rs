@@ -1,7 +1,7 @@
 //! `seq::independent`: golden values, an independent re-implementation of the hash, packet vs
 //! scalar bit equality, the [0, 1) range, moments and χ² uniformity, with negative controls.
 
-use crate::common::TestRng;
+use crate::common::{TestRng, lanes};
 use glam::DVec2;
 use mcsample::lane::U32Lane;
 use mcsample::seq;
@@ -120,17 +120,18 @@ fn packet_equals_scalar_bit_for_bit() {
     let mut rng = TestRng::new(3);
     let mut indices: Vec<u32> = (0..4096).map(|_| rng.next_u32()).collect();
     indices.extend([0, 1, u32::MAX, u32::MAX - 1, 0x8000_0000, 0xff, 0x100, 7]);
+    let mut f = Vec::new();
     for _ in 0..64 {
         let (d, s) = (rng.below(256), rng.next_u32());
-        check_lanes::<u32, f32>(
-            &indices,
-            |i| seq::independent(i, d, s),
-            |i| seq::independent(i, d, s),
-        )
-        .unwrap_or_else(|e| panic!("independent, dim {d} seed {s}: {e}"));
-        check_lanes::<u32, u32>(&indices, |i| seq::hash3(i, d, s), |i| seq::hash3(i, d, s))
-            .unwrap_or_else(|e| panic!("hash3, dim {d} seed {s}: {e}"));
+        let ctx = format!("dim {d} seed {s}");
+        lanes!(&mut f, &format!("independent, {ctx}"), &indices, |i: U| {
+            seq::independent(i, d, s)
+        });
+        lanes!(&mut f, &format!("hash3, {ctx}"), &indices, |i: U| {
+            seq::hash3(i, d, s)
+        });
     }
+    assert!(f.is_empty(), "{}", f.join("\n"));
 }
 
 #[test]

@@ -36,9 +36,10 @@ use crate::common::*;
 use glam::{Vec2, Vec3};
 use mcsample::frame::Frame;
 use mcsample::verify::registry::{self, Kind, NanPolicy, Sampler};
-use mcsample::verify::{Bits, LaneMismatch, Scalar, check_lanes};
+use mcsample::verify::{Bits, LaneMismatch, Scalar, check_lanes, check_lanes16};
 use mcsample::warp::{self, ONE_MINUS_EPS};
 use mcsample::x8::{F32x8, Vec2x8, Vec3x8};
+use mcsample::x16::Vec2x16;
 
 /// The scalar components of a result, in order (a direction and its pdf: x, y, z, pdf).
 type Out = Vec<f32>;
@@ -115,7 +116,10 @@ fn warp_case(s: Sampler) -> Warp {
     Warp {
         name: s.name(),
         s: Box::new(move |u| flat(s.sample(u))),
-        lanes: Box::new(move |us| check_lanes(us, |u: Vec2x8| s.sample(u), |u: Vec2| s.sample(u))),
+        lanes: Box::new(move |us| {
+            check_lanes(us, |u: Vec2x8| s.sample(u), |u: Vec2| s.sample(u))?;
+            check_lanes16(us, |u: Vec2x16| s.sample(u), |u: Vec2| s.sample(u))
+        }),
         domain: domain(s),
         nan_coords: s.nan_coords(),
         fixed: match s {

@@ -17,12 +17,11 @@
 //! profile, so an integer overflow in the library on these inputs panics here instead of
 //! wrapping; `overflow_checks_are_on` fails if that profile loses them.
 
+use crate::common::lanes;
 use glam::{Vec2, Vec3};
-use mcsample::frame::{self, Frame};
+use mcsample::frame::Frame;
 use mcsample::seq;
-use mcsample::verify::check_lanes;
 use mcsample::verify::registry::{self, Kind, SPECIAL_PARAMS, Sampler};
-use mcsample::x8::{F32x8, U32x8, Vec2x8, Vec3x8};
 
 /// The special u coordinates: 0, the smallest subnormal, 1e-30, 2⁻²⁴, ½, 1 − 2⁻²⁴, 1, NaN, −0,
 /// −1e-30, 2 and ±∞.
@@ -110,18 +109,14 @@ fn every_sampler_on_special_inputs_keeps_the_policy_in_both_widths() {
     for s in samplers() {
         let name = format!("{} {s:?}", s.name());
         // Lanes: sample, then pdf and inverse at the samples and at the special points.
-        let mut fail = |what: &str, e: String| failures.push(format!("{name}: {what}: {e}"));
-        if let Err(e) = check_lanes(&us, |u: Vec2x8| s.sample(u), |u: Vec2| s.sample(u)) {
-            fail("sample lanes", e.to_string());
-        }
+        let f = &mut failures;
+        lanes!(f, &format!("{name}: sample lanes"), &us, |u: V2| s
+            .sample(u));
         let mut xs: Vec<Vec3> = us.iter().map(|&u| s.sample(u).0).collect();
         xs.extend(&points);
-        if let Err(e) = check_lanes(&xs, |x: Vec3x8| s.pdf(x), |x: Vec3| s.pdf(x)) {
-            fail("pdf lanes", e.to_string());
-        }
-        if let Err(e) = check_lanes(&xs, |x: Vec3x8| s.inverse(x), |x: Vec3| s.inverse(x)) {
-            fail("inverse lanes", e.to_string());
-        }
+        lanes!(f, &format!("{name}: pdf lanes"), &xs, |x: V3| s.pdf(x));
+        lanes!(f, &format!("{name}: inverse lanes"), &xs, |x: V3| s
+            .inverse(x));
         cases += 3 * us.len().max(xs.len());
 
         for &u in &us {
@@ -160,15 +155,12 @@ fn frames_on_special_normals_keep_the_policy_in_both_widths() {
         .iter()
         .flat_map(|&n| vs.iter().map(move |&v| (n, v)))
         .collect();
-    let frame_x8 = |(n, v): (Vec3x8, Vec3x8)| {
-        let f = frame::Frame::from_normal(n);
-        (f.t, f.to_local(v), f.to_world(v))
-    };
-    let frame_1 = |(n, v): (Vec3, Vec3)| {
+    let mut failures = Vec::new();
+    lanes!(&mut failures, "Frame", &pairs, |(n, v): (V3, V3)| {
         let f = Frame::from_normal(n);
         (f.t, f.to_local(v), f.to_world(v))
-    };
-    check_lanes(&pairs, frame_x8, frame_1).unwrap_or_else(|e| panic!("{e}"));
+    });
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
     for &(n, v) in &pairs {
         cases += 1;
         let f = Frame::from_normal(n);
@@ -212,6 +204,7 @@ fn generators_on_special_indices_and_counts_stay_in_the_unit_interval() {
     let seeds = [0u32, 1, u32::MAX];
     let mut cases = 0;
     let in01 = |x: f32| (0.0..1.0).contains(&x);
+    let mut f = Vec::new();
     for &d in &dims {
         for &s in &seeds {
             let one = |i: u32| {
@@ -221,14 +214,13 @@ fn generators_on_special_indices_and_counts_stay_in_the_unit_interval() {
                     seq::sobol_2d(i, d, s),
                 )
             };
-            let eight = |i: U32x8| {
+            lanes!(&mut f, "sequences", &indices, |i: U| {
                 (
                     seq::independent(i, d, s),
                     seq::sobol(i, d, s),
                     seq::sobol_2d(i, d, s),
                 )
-            };
-            check_lanes(&indices, eight, one).unwrap_or_else(|e| panic!("{e}"));
+            });
             for &n in &counts {
                 for &m in &counts {
                     let one = |i: u32| {
@@ -238,14 +230,13 @@ fn generators_on_special_indices_and_counts_stay_in_the_unit_interval() {
                             seq::multi_jittered_2d(i, n, m, d, s),
                         )
                     };
-                    let eight = |i: U32x8| {
+                    lanes!(&mut f, "counted sequences", &indices, |i: U| {
                         (
                             seq::stratified(i, n, d, s),
                             seq::jittered_2d(i, n, m, d, s),
                             seq::multi_jittered_2d(i, n, m, d, s),
                         )
-                    };
-                    check_lanes(&indices, eight, one).unwrap_or_else(|e| panic!("{e}"));
+                    });
                     for &i in &indices {
                         cases += 1;
                         let (a, p, q) = one(i);
@@ -266,7 +257,7 @@ fn generators_on_special_indices_and_counts_stay_in_the_unit_interval() {
             }
         }
     }
-    let _ = F32x8::ZERO;
+    assert!(f.is_empty(), "{}", f.join("\n"));
     assert!(cases >= 10_000, "only {cases} cases");
 }
 

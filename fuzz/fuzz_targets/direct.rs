@@ -3,8 +3,9 @@
 //! strategy, small sample counts, any roulette threshold and sequence seed. Invariants: no
 //! panic; the radiance is finite, and ≥ 0 except for optimal MIS, whose weights can be negative
 //! (reflectances in [0, 1], radiance ≥ 0); it is 0 when
-//! n·ωo < 0; the shadow rays are within the strategy's budget; and the packet form (the same
-//! inputs in all eight lanes) equals the scalar form bit for bit, with eight times the rays.
+//! n·ωo < 0; the shadow rays are within the strategy's budget; and the packet forms (the same
+//! inputs in all eight or sixteen lanes) equal the scalar form bit for bit, with eight or
+//! sixteen times the rays.
 
 #![no_main]
 
@@ -15,6 +16,7 @@ use mcsample::seq::{Generator, Sequence};
 use mcsample::scene::{DiskLight, Lambert, Light, Phong, RectangleLight, SphereLight, TriangleLight};
 use mcsample::verify::direct::Material;
 use mcsample::x8::{F32x8, U32x8, Vec3x8};
+use mcsample::x16::{F32x16, U32x16, Vec3x16};
 
 fn floats(data: &[u8]) -> [f32; 32] {
     let mut out = [0.0f32; 32];
@@ -95,4 +97,16 @@ fuzz_target!(|data: &[u8]| {
         assert_eq!(lane.to_array().map(f32::to_bits), e.radiance.to_array().map(f32::to_bits), "{name}: packet");
     }
     assert_eq!(e8.shadow_rays, 8 * e.shadow_rays, "{name}: packet rays");
+
+    let at16 = ShadingPoint { p: Vec3x16::splat(at.p), n: Vec3x16::splat(at.n), wo: Vec3x16::splat(at.wo) };
+    let mut s16 = Sequence { first: U32x16::splat(f[28].to_bits()), seed, generator: Generator::Sobol };
+    let mut vis16 = |m: F32x16, _: Vec3x16, to: Vec3x16| {
+        let bits = to.x.to_array().map(|x| if x.to_bits() & 1 == 0 { f32::from_bits(!0) } else { 0.0 });
+        m & F32x16::new(bits)
+    };
+    let e16 = direct::estimate(strategy, &lights_sel, &material.splat(), at16, config, &mut s16, &mut vis16);
+    for lane in e16.radiance.to_array() {
+        assert_eq!(lane.to_array().map(f32::to_bits), e.radiance.to_array().map(f32::to_bits), "{name}: x16 packet");
+    }
+    assert_eq!(e16.shadow_rays, 16 * e.shadow_rays, "{name}: x16 packet rays");
 });

@@ -12,6 +12,7 @@ use mcsample::scene::{
     DiskLight, Lambert, Light, LightSample, Phong, RectangleLight, SphereLight, TriangleLight,
 };
 use mcsample::x8::{F32x8, Vec2x8, Vec3x8};
+use mcsample::x16::{F32x16, Vec2x16, Vec3x16};
 
 fn floats(data: &[u8]) -> [f32; 24] {
     let mut out = [0.0f32; 24];
@@ -73,6 +74,20 @@ fn check_light(l: &Light, p: Vec3, u: Vec2, w: Vec3, name: &str) {
     let a8 = l8.sample_area(p8, u8);
     assert_eq!(bits(a8.p.lane(0)), bits(a.p), "{name}: packet area point");
     assert_eq!(a8.pdf.to_array()[0].to_bits(), a.pdf.to_bits(), "{name}: packet area pdf");
+
+    // Lane 15 of the sixteen-wide packet equals the scalar.
+    let l16: Light<Vec3x16> = l.splat();
+    let (p16, u16, w16) = (Vec3x16::splat(p), Vec2x16::splat(u), Vec3x16::splat(w));
+    let s16 = l16.sample(p16, u16);
+    assert_eq!(bits(s16.wi.lane(15)), bits(s.wi), "{name}: x16 wi");
+    assert_eq!(s16.pdf.to_array()[15].to_bits(), s.pdf.to_bits(), "{name}: x16 pdf");
+    assert_eq!(s16.dist.to_array()[15].to_bits(), s.dist.to_bits(), "{name}: x16 dist");
+    assert_eq!(bits(s16.le.lane(15)), bits(s.le), "{name}: x16 Le");
+    assert_eq!(l16.pdf(p16, w16).to_array()[15].to_bits(), pw.to_bits(), "{name}: x16 pdf(w)");
+    assert_eq!(l16.hit(p16, w16).to_array()[15].to_bits(), h.to_bits(), "{name}: x16 hit(w)");
+    let a16 = l16.sample_area(p16, u16);
+    assert_eq!(bits(a16.p.lane(15)), bits(a.p), "{name}: x16 area point");
+    assert_eq!(a16.pdf.to_array()[15].to_bits(), a.pdf.to_bits(), "{name}: x16 area pdf");
 }
 
 fuzz_target!(|data: &[u8]| {
@@ -120,4 +135,10 @@ fuzz_target!(|data: &[u8]| {
     assert_eq!(s8.pdf.to_array()[0].to_bits(), s.pdf.to_bits(), "phong packet pdf");
     assert_eq!(bits(s8.f.lane(0)), bits(s.f), "phong packet f");
     assert_eq!(bits(p8.eval(Vec3x8::splat(wo), Vec3x8::splat(wi)).lane(0)), bits(e), "phong packet eval");
+    let p16 = Phong::new(Vec3x16::splat(Vec3::splat(kd)), Vec3x16::splat(Vec3::splat(ks)), F32x16::splat(f[23]));
+    let s16 = p16.sample(Vec3x16::splat(wo), Vec2x16::splat(u));
+    assert_eq!(bits(s16.wi.lane(15)), bits(s.wi), "phong x16 wi");
+    assert_eq!(s16.pdf.to_array()[15].to_bits(), s.pdf.to_bits(), "phong x16 pdf");
+    assert_eq!(bits(s16.f.lane(15)), bits(s.f), "phong x16 f");
+    assert_eq!(bits(p16.eval(Vec3x16::splat(wo), Vec3x16::splat(wi)).lane(15)), bits(e), "phong x16 eval");
 });

@@ -8,7 +8,7 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use mcsample::lane::F32x8;
+use mcsample::lane::{F32x8, F32x16};
 use mcsample::mis;
 use mcsample::verify::mis1d::HEURISTICS;
 
@@ -41,6 +41,15 @@ fuzz_target!(|data: &[u8]| {
         let lanes = fx8(s(nf), s(pf), s(ng), s(pg)).to_array();
         assert!(lanes.iter().all(|l| l.to_bits() == wf.to_bits()), "{name}: lanes {lanes:?} against {wf}");
     }
+    let s = F32x16::splat;
+    for (name, f, w16) in [
+        ("balance", mis::balance::<f32> as fn(f32, f32, f32, f32) -> f32, mis::balance(s(nf), s(pf), s(ng), s(pg))),
+        ("power", mis::power::<f32>, mis::power(s(nf), s(pf), s(ng), s(pg))),
+        ("maximum", mis::maximum::<f32>, mis::maximum(s(nf), s(pf), s(ng), s(pg))),
+    ] {
+        let wf = f(nf, pf, ng, pg);
+        assert!(w16.to_array().iter().all(|l| l.to_bits() == wf.to_bits()), "{name}: x16 lanes against {wf}");
+    }
     weight("cutoff(α)", mis::cutoff(nf, pf, ng, pg, alpha));
 
     for w in [mis::balance_n([x[0], x[2], x[5]], [x[1], x[3], x[6]]), mis::power_n([x[0], x[2], x[5]], [x[1], x[3], x[6]])] {
@@ -55,6 +64,9 @@ fuzz_target!(|data: &[u8]| {
     assert!((0.0..1.0).contains(&pick.u) || (pick.probability == 0.0 && pick.u == x[10]));
     weight("one-sample probability", pick.probability);
     let packet = mis::one_sample(c.map(F32x8::splat), F32x8::splat(x[10]));
+    assert!(packet.index.to_array().iter().all(|&i| i == pick.index));
+    assert!(packet.u.to_array().iter().all(|u| u.to_bits() == pick.u.to_bits()));
+    let packet = mis::one_sample(c.map(F32x16::splat), F32x16::splat(x[10]));
     assert!(packet.index.to_array().iter().all(|&i| i == pick.index));
     assert!(packet.u.to_array().iter().all(|u| u.to_bits() == pick.u.to_bits()));
 

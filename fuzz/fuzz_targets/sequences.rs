@@ -1,7 +1,7 @@
 //! Every sequence generator and the camera sampler on arbitrary indices, counts, grids,
 //! dimensions, seeds, pixels and shutters: no panic, values in [0, 1) (never 1.0), film and lens
-//! finite, times in [open, close) for a finite shutter, and packet lanes equal to the scalar form
-//! bit for bit.
+//! finite, times in [open, close) for a finite shutter, and packet lanes (eight and sixteen
+//! wide) equal to the scalar form bit for bit.
 
 #![no_main]
 
@@ -10,6 +10,7 @@ use libfuzzer_sys::fuzz_target;
 use mcsample::camera::{CameraSample, PixelFilter};
 use mcsample::seq;
 use mcsample::x8::U32x8;
+use mcsample::x16::U32x16;
 
 fn words(data: &[u8]) -> [u32; 16] {
     let mut out = [0u32; 16];
@@ -44,6 +45,34 @@ fuzz_target!(|data: &[u8]| {
     let filter = if seed & 1 == 0 { PixelFilter::Box } else { PixelFilter::Tent };
     let cam = CameraSample::<U32x8>::generate(pixel, packet, seed, filter, shutter);
     let (film, lens, time) = (cam.film.to_array(), cam.lens.to_array(), cam.time.to_array());
+
+    // Sixteen lanes: the indices twice over, each lane equal to the eight-wide lane (checked
+    // against the scalar form below).
+    let p16 = U32x16::new(core::array::from_fn(|k| indices[k % 8]));
+    let same16 = |a: &[f32], b: &[f32]| a.iter().enumerate().all(|(k, x)| x.to_bits() == b[k % 8].to_bits());
+    let flat = |v: &[Vec2]| v.iter().flat_map(|p| [p.x, p.y]).collect::<Vec<f32>>();
+    let flat16 = |v: &[Vec2]| {
+        let f = flat(v);
+        (0..16).map(|k| [f[2 * k], f[2 * k + 1]]).collect::<Vec<_>>()
+    };
+    assert!(same16(&seq::stratified(p16, count, dim, seed).to_array(), &s), "stratified x16");
+    assert!(same16(&seq::latin_hypercube(p16, count, dim, seed).to_array(), &l), "latin_hypercube x16");
+    assert!(same16(&seq::independent(p16, dim, seed).to_array(), &ind), "independent x16");
+    assert!(same16(&seq::sobol(p16, dim, seed).to_array(), &so), "sobol x16");
+    let pairs16: [(&str, [Vec2; 16], [Vec2; 8]); 4] = [
+        ("jittered_2d", seq::jittered_2d(p16, nx, ny, dim, seed).to_array(), pairs[0].1),
+        ("multi_jittered_2d", seq::multi_jittered_2d(p16, nx, ny, dim, seed).to_array(), pairs[1].1),
+        ("cmj_2d", seq::cmj_2d(p16, nx, ny, dim, seed).to_array(), pairs[2].1),
+        ("sobol_2d", seq::sobol_2d(p16, dim, seed).to_array(), so2),
+    ];
+    for (what, sixteen, eight) in pairs16 {
+        let (a, b) = (flat16(&sixteen), flat16(&[eight, eight].concat()));
+        assert!(a.iter().zip(&b).all(|(x, y)| x.map(f32::to_bits) == y.map(f32::to_bits)), "{what} x16");
+    }
+    let cam16 = CameraSample::<U32x16>::generate(pixel, p16, seed, filter, shutter);
+    assert!(same16(&cam16.time.to_array(), &time), "camera time x16");
+    assert!(flat(&cam16.film.to_array()) == flat(&[film, film].concat()), "camera film x16");
+    assert!(flat(&cam16.lens.to_array()) == flat(&[lens, lens].concat()), "camera lens x16");
 
     for (k, &i) in indices.iter().enumerate() {
         let one = [

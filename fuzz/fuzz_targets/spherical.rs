@@ -21,6 +21,7 @@ use glam::{Vec2, Vec3};
 use libfuzzer_sys::fuzz_target;
 use mcsample::warp::{SPHERICAL_RECTANGLE_INVERSE_REACH, SphericalRectangle, SphericalTriangle};
 use mcsample::x8::{Vec2x8, Vec3x8};
+use mcsample::x16::{Vec2x16, Vec3x16};
 
 fn floats<const N: usize>(data: &[u8]) -> [f32; N] {
     let mut out = [0.0f32; N];
@@ -345,6 +346,21 @@ fn same_lanes(
     }
 }
 
+/// [`same_lanes`] for a sixteen-wide packet whose lane i holds variant i mod 8.
+fn same_lanes16(
+    name: &str,
+    scalar: &[(Vec3, f32, f32, f32, Vec2); 8],
+    packet: (Vec3x16, [f32; 16], [f32; 16], [f32; 16], Vec2x16),
+) {
+    let (x, pdf, omega, pw, back) = packet;
+    for half in 0..2 {
+        let lanes = |a: [f32; 16]| core::array::from_fn(|i| a[i + 8 * half]);
+        let x8 = Vec3x8::from(core::array::from_fn::<Vec3, 8, _>(|i| x.lane(i + 8 * half)));
+        let b8 = Vec2x8::from(core::array::from_fn::<Vec2, 8, _>(|i| back.lane(i + 8 * half)));
+        same_lanes(name, scalar, (x8, lanes(pdf), lanes(omega), lanes(pw), b8));
+    }
+}
+
 fuzz_target!(|data: &[u8]| {
     let f: [f32; 14] = floats(data);
     let k = data.get(56..60).map_or([20, 40, 60, 80], |b| {
@@ -373,6 +389,18 @@ fuzz_target!(|data: &[u8]| {
         ),
     );
 
+    // Sixteen lanes: the variants twice over, so the upper half is checked too.
+    let t16 = {
+        let pack = |j: usize| Vec3x16::from(core::array::from_fn::<Vec3, 16, _>(|i| tris[i % 8][j]));
+        SphericalTriangle::new(pack(0), pack(1), pack(2))
+    };
+    let (x16, pdf16) = t16.sample(Vec2x16::splat(u));
+    same_lanes16(
+        "triangle x16",
+        &tri_results,
+        (x16, pdf16.to_array(), t16.solid_angle().to_array(), t16.pdf(Vec3x16::splat(w)).to_array(), t16.inverse(x16)),
+    );
+
     let rects = rectangles(g, k);
     let rect_results = core::array::from_fn(|i| check_rectangle(rects[i], u, w));
     let r8 = {
@@ -390,5 +418,15 @@ fuzz_target!(|data: &[u8]| {
             r8.pdf(w8).to_array(),
             r8.inverse(x8),
         ),
+    );
+    let r16 = {
+        let pack = |j: usize| Vec3x16::from(core::array::from_fn::<Vec3, 16, _>(|i| rects[i % 8][j]));
+        SphericalRectangle::new(pack(0), pack(1), pack(2))
+    };
+    let (x16, pdf16) = r16.sample(Vec2x16::splat(u));
+    same_lanes16(
+        "rectangle x16",
+        &rect_results,
+        (x16, pdf16.to_array(), r16.solid_angle().to_array(), r16.pdf(Vec3x16::splat(w)).to_array(), r16.inverse(x16)),
     );
 });

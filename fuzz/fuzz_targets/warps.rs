@@ -1,6 +1,7 @@
 //! Every sampler of the registry on arbitrary u, parameters and geometry: no panic, the
 //! documented bad-input policy of `Sampler::check_sample` and `Sampler::check_point`, and the
-//! packet form's lanes equal to the scalar form bit for bit (sample, pdf and inverse).
+//! packet forms' lanes (eight and sixteen wide) equal to the scalar form bit for bit (sample,
+//! pdf and inverse).
 
 #![no_main]
 
@@ -9,6 +10,7 @@ use libfuzzer_sys::fuzz_target;
 use mcsample::scene::AnyShape;
 use mcsample::verify::registry::{self, LightSampler, Sampler};
 use mcsample::x8::{Vec2x8, Vec3x8};
+use mcsample::x16::{Vec2x16, Vec3x16};
 
 fn floats(data: &[u8]) -> [f32; 16] {
     let mut out = [0.0f32; 16];
@@ -18,7 +20,7 @@ fn floats(data: &[u8]) -> [f32; 16] {
     out
 }
 
-/// Lane 0 of a packet (all lanes carry the same input) against the scalar result, bit for bit.
+/// One lane of a packet (all lanes carry the same input) against the scalar result, bit for bit.
 fn same(s: [f32; 3], p: [f32; 3], what: &str, s_name: &str) {
     assert_eq!(
         s.map(f32::to_bits),
@@ -67,11 +69,18 @@ fuzz_target!(|data: &[u8]| {
         let (x8, pdf8) = s.sample(Vec2x8::splat(u));
         same(x.to_array(), x8.to_array()[0].to_array(), "sample", &name);
         same([pdf; 3], [pdf8.to_array()[0]; 3], "sample pdf", &name);
+        let (x16, pdf16) = s.sample(Vec2x16::splat(u));
+        same(x.to_array(), x16.lane(15).to_array(), "x16 sample", &name);
+        same([pdf; 3], [pdf16.to_array()[15]; 3], "x16 sample pdf", &name);
         for q in [x, point] {
             let q8 = Vec3x8::splat(q);
             same([s.pdf(q); 3], [s.pdf(q8).to_array()[0]; 3], "pdf", &name);
             let (b, b8) = (s.inverse(q), s.inverse(q8).to_array()[0]);
             same(b.extend(0.0).to_array(), b8.extend(0.0).to_array(), "inverse", &name);
+            let q16 = Vec3x16::splat(q);
+            same([s.pdf(q); 3], [s.pdf(q16).to_array()[15]; 3], "x16 pdf", &name);
+            let b16 = s.inverse(q16).lane(15);
+            same(b.extend(0.0).to_array(), b16.extend(0.0).to_array(), "x16 inverse", &name);
         }
         s.check_sample(u).unwrap();
         s.check_point(point).unwrap();

@@ -23,7 +23,7 @@ use glam::{DVec3, Vec3};
 
 use crate::direct::{self, Config, Lights, ShadingPoint, Strategy};
 use crate::estimate::MeanVar;
-use crate::lane::F32x8;
+use crate::lane::{F32x8, Lane, V3};
 use crate::point::Point3;
 use crate::scene::{
     Bsdf, BsdfSample, DiskLight, Lambert, Light, Phong, PowerTable, RectangleLight, SphereLight,
@@ -66,15 +66,13 @@ where
 }
 
 impl Material {
-    /// The same material in all eight lanes.
-    pub fn splat(&self) -> Material<Vec3x8> {
+    /// The same material in every lane of width `V`.
+    pub fn splat<V: Point3>(&self) -> Material<V> {
+        let c = |x: f32| <V::Lane as Lane>::c(f64::from(x));
+        let v = |x: Vec3| V::from_lanes(V3::new(c(x.x), c(x.y), c(x.z)));
         match *self {
-            Self::Lambert(b) => Material::Lambert(Lambert::new(Vec3x8::splat(b.rho))),
-            Self::Phong(b) => Material::Phong(Phong::new(
-                Vec3x8::splat(b.kd),
-                Vec3x8::splat(b.ks),
-                F32x8::splat(b.n),
-            )),
+            Self::Lambert(b) => Material::Lambert(Lambert::new(v(b.rho))),
+            Self::Phong(b) => Material::Phong(Phong::new(v(b.kd), v(b.ks), c(b.n))),
         }
     }
 }

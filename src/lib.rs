@@ -1,5 +1,5 @@
 //! Monte Carlo sampling for direct illumination: warps with their pdfs and inverses, in a scalar
-//! form on glam types and an 8-wide packet form on `wide`, written once.
+//! form on glam types and 8- and 16-wide packet forms on `wide`, written once.
 //!
 //! `no_std`, allocation-free and free of `unsafe`; the `std` feature (on by default) adds only
 //! [`verify`], the distribution-test layer, and the `rand` feature (off by default, no_std) adds
@@ -16,7 +16,7 @@
 //! | 2 | [`math`] | [`Math`](math::Math): the crate's own transcendental functions, with their ulp bounds, and libm for f64 | lane |
 //! | 2 | [`point`] | [`Point2`](point::Point2), [`Point3`](point::Point3): the argument type that picks a call's width | lane, math |
 //! | 2 | [`x8`], [`x16`] | the public packet types of each width | lane |
-//! | 2 | [`rng`] | `Pcg32x8`: eight PCG32 streams, lane *i* equal to `rand_pcg::Pcg32` | lane |
+//! | 2 | [`rng`] | `Pcg32x8`, `Pcg32x16`: eight or sixteen PCG32 streams, lane *i* equal to `rand_pcg::Pcg32` | lane |
 //! | 3 | [`seq`] | stateless generators of (index, dimension, seed), the estimators' sample sources, and point-set quality measures | lane, rng |
 //! | 3 | [`frame`] | orthonormal frames from a normal | lane, math, point |
 //! | 3 | [`warp`] | square → disk, hemisphere, sphere, cone, Phong lobe, triangle, spherical triangle and rectangle, tent; each family's [`Family`](warp::Family) for the registry | lane, math, point |
@@ -34,10 +34,11 @@
 //! Each algorithm is one public generic function, written over [`Math`](math::Math) (a
 //! [`Lane`](lane::Lane) with transcendental functions) and documented once. The type of its
 //! argument picks the width ([`point`]): `warp::cosine_hemisphere(Vec2) -> Vec3`,
-//! `warp::cosine_hemisphere(Vec2x8) -> Vec3x8`, and `warp::cosine_hemisphere(DVec2) -> DVec3`,
-//! the f64 reference whose transcendental functions come from libm and against which the report
-//! measures f32 error. Sequence generators do the same over the index lane (`u32` or `U32x8`).
-//! [`x8`] holds the packet types only; there is no second path to the functions.
+//! `warp::cosine_hemisphere(Vec2x8) -> Vec3x8`, `warp::cosine_hemisphere(Vec2x16) -> Vec3x16`,
+//! and `warp::cosine_hemisphere(DVec2) -> DVec3`, the f64 reference whose transcendental
+//! functions come from libm and against which the report measures f32 error. Sequence generators do the same over the index lane (`u32`, `U32x8` or
+//! `U32x16`). [`x8`] and [`x16`] hold the packet types only; there is no second path to the
+//! functions.
 //!
 //! Lane *i* of a packet result equals the scalar result on lane *i*'s input, bit for bit, in any
 //! one build: the operations the lanes use are correctly rounded or exact, FMA is fused in both

@@ -8,6 +8,7 @@
 //! |---|---|---|---|
 //! | one f32 sample | [`glam::Vec2`] | [`glam::Vec3`] | `f32` |
 //! | eight f32 samples | [`Vec2x8`](crate::x8::Vec2x8) | [`Vec3x8`](crate::x8::Vec3x8) | [`F32x8`](crate::x8::F32x8) |
+//! | sixteen f32 samples | [`Vec2x16`](crate::x16::Vec2x16) | [`Vec3x16`](crate::x16::Vec3x16) | [`F32x16`](crate::x16::F32x16) |
 //! | the f64 reference | [`glam::DVec2`] | [`glam::DVec3`] | `f64` |
 //!
 //! The crate's own generic vectors [`V2`] and [`V3`] implement the traits too (for any lane with
@@ -31,10 +32,11 @@ use glam::{DVec2, DVec3, Vec2, Vec3};
 use crate::lane::{V2, V3};
 use crate::math::Math;
 
-/// A 2D point of one width: [`glam::Vec2`], [`Vec2x8`](crate::x8::Vec2x8), [`glam::DVec2`], or
-/// the generic [`V2<L>`](V2).
+/// A 2D point of one width: [`glam::Vec2`], [`Vec2x8`](crate::x8::Vec2x8),
+/// [`Vec2x16`](crate::x16::Vec2x16), [`glam::DVec2`], or the generic [`V2<L>`](V2).
 pub trait Point2: Copy {
-    /// The lane of the width: `f32`, [`F32x8`](crate::x8::F32x8) or `f64`.
+    /// The lane of the width: `f32`, [`F32x8`](crate::x8::F32x8), [`F32x16`](crate::x16::F32x16)
+    /// or `f64`.
     type Lane: Math;
     /// The 3D point of the same width.
     type Vec3: Point3<Lane = Self::Lane, Vec2 = Self>;
@@ -45,9 +47,10 @@ pub trait Point2: Copy {
 }
 
 /// A 3D point or direction of one width: [`glam::Vec3`], [`Vec3x8`](crate::x8::Vec3x8),
-/// [`glam::DVec3`], or the generic [`V3<L>`](V3).
+/// [`Vec3x16`](crate::x16::Vec3x16), [`glam::DVec3`], or the generic [`V3<L>`](V3).
 pub trait Point3: Copy {
-    /// The lane of the width: `f32`, [`F32x8`](crate::x8::F32x8) or `f64`.
+    /// The lane of the width: `f32`, [`F32x8`](crate::x8::F32x8), [`F32x16`](crate::x16::F32x16)
+    /// or `f64`.
     type Lane: Math;
     /// The 2D point of the same width.
     type Vec2: Point2<Lane = Self::Lane, Vec3 = Self>;

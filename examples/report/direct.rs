@@ -2,18 +2,21 @@
 //! `verify::direct` (analytic, quadrature, the lecture's 4 × 4 MIS grid), at N = 64 + 64
 //! samples per estimate with independent samples and unit visibility. Per row: the mean, its
 //! standard error and bias in σ, the relative RMSE of one estimate, the time per estimate (the
-//! x8 path per lane, and the scalar path), the shadow rays, and the efficiency 1/(rel MSE × time)
-//! relative to the best single strategy of the scene.
+//! x8 path per lane, and the scalar path), the x16 path's throughput over the x8 path's, the
+//! shadow rays, and the efficiency 1/(rel MSE × time) relative to the best single strategy of the
+//! scene.
 
 use std::hint::black_box;
 use std::time::Instant;
 
 use glam::Vec3;
-use mcsample::direct::{self, Config as DirectConfig, Strategy};
+use mcsample::direct::{self, Config as DirectConfig, ShadingPoint, Strategy};
 use mcsample::seq::{Generator, Sequence};
 use mcsample::verify::direct::{
     DirectRun, DirectScene, analytic_scenes, grid_scenes, quadrature_scenes, run,
 };
+use mcsample::x8::{F32x8, U32x8, Vec3x8};
+use mcsample::x16::{F32x16, U32x16, Vec3x16};
 
 use crate::Config;
 
@@ -29,6 +32,8 @@ pub struct DirectRow {
     pub ns: f64,
     /// Scalar path, ns per estimate.
     pub scalar_ns: f64,
+    /// The x16 path's estimates per second over the x8 path's, timed as their own pair.
+    pub x16_vs_x8: f64,
     /// 1/(rel MSE × ns).
     pub efficiency: f64,
     /// Efficiency over the best single strategy's of the same scene.
@@ -77,6 +82,65 @@ fn scalar_ns(scene: &DirectScene, strategy: Strategy, config: DirectConfig, coun
     t.elapsed().as_secs_f64() * 1e9 / f64::from(count)
 }
 
+/// ns per estimate of the packet path of one width (`$f`, `$u`, `$v`: its lane, index lane and
+/// vector), `count` estimates with unit visibility: the same loop for both widths.
+macro_rules! packet_ns {
+    ($name:ident, $n:literal, $f:ty, $u:ty, $v:ty) => {
+        fn $name(scene: &DirectScene, strategy: Strategy, config: DirectConfig, count: u32) -> f64 {
+            let mut table = Vec::new();
+            let lights = scene.lights(&mut table);
+            let material = scene.material.splat();
+            let at = ShadingPoint {
+                p: <$v>::splat(scene.at.p),
+                n: <$v>::splat(scene.at.n),
+                wo: <$v>::splat(scene.at.wo),
+            };
+            let mut visible = |m: $f, _: $v, _: $v| m;
+            let t = Instant::now();
+            for packet in 0..count.div_ceil($n) {
+                let first = <$u>::new(core::array::from_fn(|i| {
+                    (packet * $n + i as u32).wrapping_mul(config.samples())
+                }));
+                let mut s = Sequence {
+                    first,
+                    seed: 3,
+                    generator: Generator::Independent,
+                };
+                black_box(direct::estimate(
+                    strategy,
+                    &lights,
+                    &material,
+                    black_box(at),
+                    config,
+                    &mut s,
+                    &mut visible,
+                ));
+            }
+            t.elapsed().as_secs_f64() * 1e9 / f64::from(count.div_ceil($n) * $n)
+        }
+    };
+}
+packet_ns!(x8_ns, 8, F32x8, U32x8, Vec3x8);
+packet_ns!(x16_ns, 16, F32x16, U32x16, Vec3x16);
+
+/// The x16 path's throughput over the x8 path's on the scenes without occluders (the packet
+/// visibility here is unit), the two alternated over `rounds` and compared by their medians.
+fn x16_vs_x8(scene: &DirectScene, strategy: Strategy, config: DirectConfig, count: u32) -> f64 {
+    if !scene.occluders.is_empty() {
+        return f64::NAN;
+    }
+    let (mut a, mut b) = (Vec::new(), Vec::new());
+    for _ in 0..5 {
+        a.push(x8_ns(scene, strategy, config, count));
+        b.push(x16_ns(scene, strategy, config, count));
+    }
+    let med = |v: &mut Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    med(&mut a) / med(&mut b)
+}
+
 pub fn direct(cfg: &Config) -> Vec<DirectRow> {
     let estimates: u64 = if cfg.quick { 1024 } else { 4096 };
     let config = DirectConfig::new(N, N);
@@ -97,6 +161,7 @@ pub fn direct(cfg: &Config) -> Vec<DirectRow> {
             );
             let ns = t.elapsed().as_secs_f64() * 1e9 / r.estimates as f64;
             let scalar = scalar_ns(scene, strategy, config, (estimates / 8) as u32);
+            let x16 = x16_vs_x8(scene, strategy, config, (estimates / 4) as u32);
             rows.push(DirectRow {
                 scene: scene.name.clone(),
                 strategy: strategy.name(),
@@ -105,6 +170,7 @@ pub fn direct(cfg: &Config) -> Vec<DirectRow> {
                 run: r,
                 ns,
                 scalar_ns: scalar,
+                x16_vs_x8: x16,
                 vs_best_single: 0.0,
             });
         }

@@ -607,7 +607,7 @@ fn main() {
                 direct_rows
                     .iter()
                     .map(|r| format!(
-                        "{{\"scene\": \"{}\", \"strategy\": \"{}\", \"reference\": {}, \"mean\": {}, \"stderr\": {}, \"bias_sigma\": {}, \"rel_rmse\": {}, \"ns_per_estimate\": {}, \"scalar_ns_per_estimate\": {}, \"visibility_calls\": {}, \"efficiency\": {}, \"efficiency_vs_best_single\": {}, \"estimates\": {}, \"samples_per_estimate\": {}}}",
+                        "{{\"scene\": \"{}\", \"strategy\": \"{}\", \"reference\": {}, \"mean\": {}, \"stderr\": {}, \"bias_sigma\": {}, \"rel_rmse\": {}, \"ns_per_estimate\": {}, \"scalar_ns_per_estimate\": {}, \"x16_vs_x8\": {}, \"visibility_calls\": {}, \"efficiency\": {}, \"efficiency_vs_best_single\": {}, \"estimates\": {}, \"samples_per_estimate\": {}}}",
                         esc(&r.scene),
                         r.strategy,
                         num(r.reference),
@@ -617,6 +617,7 @@ fn main() {
                         num(r.run.rel_rmse),
                         num(r.ns),
                         num(r.scalar_ns),
+                        num(r.x16_vs_x8),
                         num(r.run.shadow_rays),
                         num(r.efficiency),
                         num(r.vs_best_single),

@@ -282,14 +282,16 @@ pub fn direct(rows: &[DirectRow]) -> Table {
          samples per estimate, independent samples, unit visibility.\n\
          bias σ: the mean's bias in standard errors of the mean of {} estimates (– where every \
          estimate was equal); rel RMSE: of one estimate.\n\
-         x8 ns: per estimate per lane; rays: shadow rays per estimate; eff / best: efficiency \
+         x8 ns: per estimate per lane; x16 / x8: the sixteen-wide path's throughput over the \
+         eight-wide path's, medians of five alternating runs each (– for scenes with occluders); \
+         rays: shadow rays per estimate; eff / best: efficiency \
          1/(MSE·time) over that of the best single strategy (uniform, light or BSDF sampling) \
          of the scene.",
         rows.first().map_or(0, |r| r.run.estimates)
     );
     let head = [
-        "scene", "strategy", "reference", "bias σ", "rel RMSE", "x8 ns", "scalar ns", "rays",
-        "eff / best",
+        "scene", "strategy", "reference", "bias σ", "rel RMSE", "x8 ns", "scalar ns", "x16 / x8",
+        "rays", "eff / best",
     ];
     let mut t = Table::new("Direct lighting", note, &head, 2);
     for r in rows {
@@ -301,6 +303,11 @@ pub fn direct(rows: &[DirectRow]) -> Table {
             sig(r.run.rel_rmse, 3),
             format!("{:.0}", r.ns),
             format!("{:.0}", r.scalar_ns),
+            if r.x16_vs_x8.is_finite() {
+                format!("{:.2}×", r.x16_vs_x8)
+            } else {
+                "–".into()
+            },
             format!("{:.2}", r.run.shadow_rays),
             sig(r.vs_best_single, 3),
         ]);

@@ -15,7 +15,10 @@
 //!   pbrt-v4's (`peers/pbrt.rs`), once with the geometry varying from sample to sample and once
 //!   with one geometry passed through `black_box` for every sample;
 //! - the simple warps in a caller's `#[inline(never)]` loop over structure-of-arrays slices
-//!   (`u1`, `u2` in; `x`, `y`, `z` out), ours beside the plain version ("soa").
+//!   (`u1`, `u2` in; `x`, `y`, `z` out), ours beside the plain version ("soa");
+//! - the same layout on 2²⁴ points, one thread, x8 against x16, beside a copy kernel that moves
+//!   the same bytes ("2^24"): the shape of Mitsuba 3's array pass, which
+//!   `benches/mitsuba_warps.py` times for its own warps with Dr.Jit's LLVM backend.
 //!
 //! `cargo bench --bench peers`; for the AVX2 build,
 //! `RUSTFLAGS="-C target-feature=+avx2,+fma" cargo bench --target-dir target/avx2 --bench peers`.
@@ -33,12 +36,14 @@ use criterion::{
     BenchmarkGroup, BenchmarkId, Criterion, Throughput, criterion_group, criterion_main,
 };
 use glam::{DVec3, Vec2, Vec3};
+use mcsample::lane::Lane;
 use mcsample::rng::Pcg32x8;
 use mcsample::verify::registry::{self, Sampler};
 use mcsample::warp::{
     SolidAngleRectangle, SolidAngleTriangle, SphericalRectangle, SphericalTriangle, UniformCone,
 };
-use mcsample::x8::{Vec2x8, Vec3x8};
+use mcsample::x8::{F32x8, Vec2x8, Vec3x8};
+use mcsample::x16::{F32x16, Vec2x16};
 use plain::{U8, V8};
 use rand_core::Rng;
 use rand_distr::{Distribution, UnitCircle, UnitDisc, UnitSphere};
@@ -549,5 +554,82 @@ fn soa(c: &mut Criterion) {
     );
 }
 
-criterion_group!(benches, warps, polygons, soa, tent_1d, random_points);
+/// 2²⁴ points in structure-of-arrays slices, as Mitsuba's arrays hold them: the whole array
+/// pass of each warp in both packet widths, one thread, storing as many outputs as Mitsuba's
+/// warp returns (two for the disk and the triangle's barycentrics, three for directions), and
+/// a copy kernel that moves the same bytes as the direction warps.
+fn large_arrays(c: &mut Criterion) {
+    const M: usize = 1 << 24;
+    let mut rng = Pcg32::new(7, 11);
+    let mut f = || (rng.next_u32() >> 8) as f32 * (1.0 / 16_777_216.0);
+    let (u1, u2): (Vec<f32>, Vec<f32>) = (0..M).map(|_| (f(), f())).unzip();
+    let (mut x, mut y, mut z) = (vec![0.0f32; M], vec![0.0f32; M], vec![0.0f32; M]);
+    let mut g = c.benchmark_group("peers/2^24");
+    g.throughput(Throughput::Elements(M as u64)).sample_size(10);
+    // One array pass of width $w over lane type $l: `$body` maps the packet `u` to the outputs.
+    macro_rules! pass {
+        ($name:expr, $l:ty, $v2:ty, $w:literal, |$u:ident| $body:expr) => {
+            g.bench_function($name, |b| {
+                b.iter(|| {
+                    let chunks = u1
+                        .chunks_exact($w)
+                        .zip(u2.chunks_exact($w))
+                        .zip(x.chunks_exact_mut($w))
+                        .zip(y.chunks_exact_mut($w))
+                        .zip(z.chunks_exact_mut($w));
+                    for ((((a, b), ox), oy), oz) in chunks {
+                        let load = |s: &[f32]| <$l>::new(core::array::from_fn(|i| s[i]));
+                        let $u = <$v2>::new(load(a), load(b));
+                        let out: [Option<$l>; 3] = $body;
+                        for (o, v) in [ox, oy, oz].into_iter().zip(out) {
+                            if let Some(v) = v {
+                                o.copy_from_slice(&v.to_array());
+                            }
+                        }
+                    }
+                    black_box((&x, &y, &z));
+                })
+            });
+        };
+    }
+    macro_rules! both {
+        ($warp:literal, |$u:ident| $body:expr) => {
+            pass!(concat!($warp, " x8"), F32x8, Vec2x8, 8, |$u| $body);
+            pass!(concat!($warp, " x16"), F32x16, Vec2x16, 16, |$u| $body);
+        };
+    }
+    both!("copy", |u| [Some(u.x), Some(u.y), Some(u.x)]);
+    both!("concentric_disk", |u| {
+        let p = mcsample::warp::concentric_disk(u);
+        [Some(p.x), Some(p.y), None]
+    });
+    both!("cosine_hemisphere", |u| {
+        let w = mcsample::warp::cosine_hemisphere(u);
+        [Some(w.x), Some(w.y), Some(w.z)]
+    });
+    both!("uniform_sphere", |u| {
+        let w = mcsample::warp::uniform_sphere(u);
+        [Some(w.x), Some(w.y), Some(w.z)]
+    });
+    // Mitsuba's cone takes cos θmax = 0.7: h = 1 − 0.7.
+    both!("uniform_cone", |u| {
+        let w = mcsample::warp::uniform_cone(u, Lane::c(0.3));
+        [Some(w.x), Some(w.y), Some(w.z)]
+    });
+    both!("uniform_triangle", |u| {
+        let b = mcsample::warp::uniform_triangle(u);
+        [Some(b.x), Some(b.y), None]
+    });
+    g.finish();
+}
+
+criterion_group!(
+    benches,
+    warps,
+    polygons,
+    soa,
+    tent_1d,
+    random_points,
+    large_arrays
+);
 criterion_main!(benches);

@@ -417,7 +417,21 @@ macro_rules! f32_packet {
                 fn gt(self, o: Self) -> $t { self.simd_gt(o) }
                 fn ge(self, o: Self) -> $t { self.simd_ge(o) }
                 fn eq(self, o: Self) -> $t { self.simd_eq(o) }
-                fn select(m: $t, a: Self, b: Self) -> Self { m.select(a, b) }
+            }
+            // With AVX-512 a blend takes its condition from a mask register, so `wide`'s
+            // select converts the vector mask first (vpmovd2m, then vblendmps: two operations
+            // on the critical path of every select). The masks here are whole lanes of ones or
+            // zeros, for which the bitwise select is the same function, and AVX-512 does it in
+            // one ternary-logic instruction.
+            #[cfg(target_feature = "avx512f")]
+            #[inline(always)]
+            fn select(m: $t, a: Self, b: Self) -> Self {
+                m.bitselect(a, b)
+            }
+            #[cfg(not(target_feature = "avx512f"))]
+            #[inline(always)]
+            fn select(m: $t, a: Self, b: Self) -> Self {
+                m.select(a, b)
             }
         }
     };

@@ -561,33 +561,29 @@ impl<T: Copy> Candidate<bool> for T {
     }
 }
 
-impl Candidate<F64x8> for U32x8 {
-    type Scalar = u32;
-    #[inline(always)]
-    fn pick(m: F64x8, a: U32x8, b: U32x8) -> U32x8 {
-        let bits = m.to_bitmask();
-        let m = U32x8::new(core::array::from_fn(|i| 0u32.wrapping_sub((bits >> i) & 1)));
-        (a & m) | (b & !m)
-    }
-    #[inline(always)]
-    fn in_lane(self, i: usize) -> u32 {
-        crate::lane::lane_of(&self.to_array(), i)
-    }
+/// The packet widths' candidate indices, chosen by the f64 mask of the same width (its lanes as
+/// bits: `$bits`).
+macro_rules! packet_candidate {
+    ($($m:ty, $u:ty, |$x:ident| $bits:expr);*) => {$(
+        impl Candidate<$m> for $u {
+            type Scalar = u32;
+            #[inline(always)]
+            fn pick(m: $m, a: $u, b: $u) -> $u {
+                let bits = { let $x = m; $bits };
+                let m = <$u>::new(core::array::from_fn(|i| 0u32.wrapping_sub((bits >> i) & 1)));
+                (a & m) | (b & !m)
+            }
+            #[inline(always)]
+            fn in_lane(self, i: usize) -> u32 {
+                crate::lane::lane_of(&self.to_array(), i)
+            }
+        }
+    )*};
 }
-
-impl Candidate<F64x16> for U32x16 {
-    type Scalar = u32;
-    #[inline(always)]
-    fn pick(m: F64x16, a: U32x16, b: U32x16) -> U32x16 {
-        let bits = m.lo.to_bitmask() | (m.hi.to_bitmask() << 8);
-        let m = U32x16::new(core::array::from_fn(|i| 0u32.wrapping_sub((bits >> i) & 1)));
-        (a & m) | (b & !m)
-    }
-    #[inline(always)]
-    fn in_lane(self, i: usize) -> u32 {
-        crate::lane::lane_of(&self.to_array(), i)
-    }
-}
+packet_candidate!(
+    F64x8, U32x8, |m| m.to_bitmask();
+    F64x16, U32x16, |m| m.lo.to_bitmask() | (m.hi.to_bitmask() << 8)
+);
 
 impl<T, W> Reservoir<T, W>
 where

@@ -208,19 +208,18 @@ impl<F: FnMut(Vec3, Vec3) -> bool> Visibility<Vec3> for F {
     }
 }
 
-impl<F: FnMut(F32x8, Vec3x8, Vec3x8) -> F32x8> Visibility<Vec3x8> for F {
-    #[inline]
-    fn visible(&mut self, active: F32x8, from: Vec3x8, to: Vec3x8) -> F32x8 {
-        active & self(active, from, to)
-    }
+/// The packet widths' visibility: the callback's mask, and-ed with the lanes that asked.
+macro_rules! packet_visibility {
+    ($($f:ty, $v:ty);*) => {$(
+        impl<F: FnMut($f, $v, $v) -> $f> Visibility<$v> for F {
+            #[inline]
+            fn visible(&mut self, active: $f, from: $v, to: $v) -> $f {
+                active & self(active, from, to)
+            }
+        }
+    )*};
 }
-
-impl<F: FnMut(F32x16, Vec3x16, Vec3x16) -> F32x16> Visibility<Vec3x16> for F {
-    #[inline]
-    fn visible(&mut self, active: F32x16, from: Vec3x16, to: Vec3x16) -> F32x16 {
-        active & self(active, from, to)
-    }
-}
+packet_visibility!(F32x8, Vec3x8; F32x16, Vec3x16);
 
 mod sealed {
     pub trait Sealed {}
@@ -253,26 +252,20 @@ impl DirectLane for f32 {
     }
 }
 
-impl DirectLane for F32x8 {
-    type Index = U32x8;
-    #[inline(always)]
-    fn index(s: u32) -> U32x8 {
-        U32x8::splat(s)
-    }
-    #[inline(always)]
-    fn count(m: F32x8) -> u32 {
-        m.to_bitmask().count_ones()
-    }
+/// The packet widths: a candidate index of the same width, and a mask's lane count.
+macro_rules! packet_direct_lane {
+    ($($f:ty, $u:ty);*) => {$(
+        impl DirectLane for $f {
+            type Index = $u;
+            #[inline(always)]
+            fn index(s: u32) -> $u {
+                <$u>::splat(s)
+            }
+            #[inline(always)]
+            fn count(m: $f) -> u32 {
+                m.to_bitmask().count_ones()
+            }
+        }
+    )*};
 }
-
-impl DirectLane for F32x16 {
-    type Index = U32x16;
-    #[inline(always)]
-    fn index(s: u32) -> U32x16 {
-        U32x16::splat(s)
-    }
-    #[inline(always)]
-    fn count(m: F32x16) -> u32 {
-        m.to_bitmask().count_ones()
-    }
-}
+packet_direct_lane!(F32x8, U32x8; F32x16, U32x16);

@@ -934,40 +934,24 @@ macro_rules! lanes {
         $crate::common::check_both($failures, $name, $inputs, $func, $func, $func)
     };
     ($failures:expr, $name:expr, $inputs:expr, |$p:tt : $t:ty| $body:expr) => {{
-        let scalar = {
-            #[allow(dead_code)]
-            type L = f32;
-            #[allow(dead_code)]
-            type U = u32;
-            #[allow(dead_code)]
-            type V2 = glam::Vec2;
-            #[allow(dead_code)]
-            type V3 = glam::Vec3;
-            |$p: $t| $body
-        };
-        let x8 = {
-            #[allow(dead_code)]
-            type L = mcsample::x8::F32x8;
-            #[allow(dead_code)]
-            type U = mcsample::x8::U32x8;
-            #[allow(dead_code)]
-            type V2 = mcsample::x8::Vec2x8;
-            #[allow(dead_code)]
-            type V3 = mcsample::x8::Vec3x8;
-            |$p: $t| $body
-        };
-        let x16 = {
-            #[allow(dead_code)]
-            type L = mcsample::x16::F32x16;
-            #[allow(dead_code)]
-            type U = mcsample::x16::U32x16;
-            #[allow(dead_code)]
-            type V2 = mcsample::x16::Vec2x16;
-            #[allow(dead_code)]
-            type V3 = mcsample::x16::Vec3x16;
-            |$p: $t| $body
-        };
+        let scalar = lanes!(@width f32, u32, glam::Vec2, glam::Vec3, |$p: $t| $body);
+        let x8 = lanes!(@width mcsample::x8::F32x8, mcsample::x8::U32x8, mcsample::x8::Vec2x8,
+            mcsample::x8::Vec3x8, |$p: $t| $body);
+        let x16 = lanes!(@width mcsample::x16::F32x16, mcsample::x16::U32x16,
+            mcsample::x16::Vec2x16, mcsample::x16::Vec3x16, |$p: $t| $body);
         $crate::common::check_both($failures, $name, $inputs, x8, x16, scalar)
+    }};
+    // The closure with L, U, V2 and V3 naming one width's types.
+    (@width $l:ty, $u:ty, $v2:ty, $v3:ty, |$p:tt : $t:ty| $body:expr) => {{
+        #[allow(dead_code)]
+        type L = $l;
+        #[allow(dead_code)]
+        type U = $u;
+        #[allow(dead_code)]
+        type V2 = $v2;
+        #[allow(dead_code)]
+        type V3 = $v3;
+        |$p: $t| $body
     }};
 }
 pub(crate) use lanes;

@@ -16,8 +16,7 @@
 //! ```
 
 pub use crate::lane::{F32x16, U32x16};
-use crate::lane::{V2, V3};
-use crate::x8::packet_vectors;
+use crate::lane::{V2, V3, packet_vectors};
 
 /// Sixteen 2D vectors, one per lane.
 pub type Vec2x16 = V2<F32x16>;

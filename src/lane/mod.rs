@@ -48,6 +48,7 @@ mod vector;
 
 pub use float::{F32x8, F32x16, F64x8, F64x16, Lane, Lanes, Mask, Widen};
 pub use int::{Lane32, U32Lane, U32x8, U32x16};
+pub(crate) use vector::packet_vectors;
 pub use vector::{V2, V3};
 
 /// `[f(a₀, b₀), f(a₁, b₁), …]`: the element-wise map of two arrays of one length, without

@@ -579,11 +579,12 @@ fn main() {
                 "sequences",
                 seqs.iter()
                     .map(|r| format!(
-                        "{{\"name\": \"{}\", \"scalar_ns\": {}, \"scalar_call_ns\": {}, \"x8_ns\": {}, \"l2_star_1024\": {}, \"slope_gaussian\": {}, \"slope_disk\": {}}}",
+                        "{{\"name\": \"{}\", \"scalar_ns\": {}, \"scalar_call_ns\": {}, \"x8_ns\": {}, \"x16_ns\": {}, \"l2_star_1024\": {}, \"slope_gaussian\": {}, \"slope_disk\": {}}}",
                         esc(r.name),
                         num(r.scalar_ns),
                         num(r.scalar_call_ns),
                         num(r.x8_ns),
+                        num(r.x16_ns),
                         num(r.l2_star_1024),
                         num(r.slope_gaussian),
                         num(r.slope_disk)

@@ -1,4 +1,4 @@
-//! The report's sequences table: per generator, scalar and x8 ns per value, the RMS L2-star
+//! The report's sequences table: per generator, scalar, x8 and x16 ns per value, the RMS L2-star
 //! discrepancy of 1024 points over 32 seeds, and the RMSE slopes on the Gaussian and the disk
 //! indicator over N = 16…4096.
 
@@ -7,9 +7,10 @@ use std::time::Instant;
 
 use glam::Vec2;
 use mcsample::camera::{CameraSample, PixelFilter};
-use mcsample::rng::Pcg32x8;
+use mcsample::rng::{Pcg32x8, Pcg32x16};
 use mcsample::seq::{self, quality};
 use mcsample::x8::{F32x8, U32x8};
+use mcsample::x16::{F32x16, U32x16};
 use rand_core::Rng;
 use rand_pcg::Pcg32;
 
@@ -20,6 +21,7 @@ pub struct SeqRow {
     /// Scalar calls one at a time, on indices LLVM cannot see through.
     pub scalar_call_ns: f64,
     pub x8_ns: f64,
+    pub x16_ns: f64,
     pub l2_star_1024: f64,
     pub slope_gaussian: f64,
     pub slope_disk: f64,
@@ -35,12 +37,32 @@ fn grid(n: u32) -> (u32, u32) {
 }
 
 /// A generator: a 2D point set for the quality measures, and batch kernels for timing that write
-/// `BATCH` f32 values (scalar) or `BATCH / 8` packets, inlined over the batch.
+/// `BATCH` f32 values (scalar) or `BATCH / 8` and `BATCH / 16` packets, inlined over the batch.
 struct Generator {
     name: &'static str,
     points: fn(u32, u32, u32) -> Vec2,
     scalar: fn(&mut [f32], bool),
-    packet: fn(&mut [F32x8]),
+    packet: Packets,
+}
+
+/// The eight- and sixteen-wide batch kernels of a generator.
+type Packets = (fn(&mut [F32x8]), fn(&mut [F32x16]));
+
+/// A generator's packet kernels, written once: `$body` fills `$out` (a slice of packets) and
+/// names the index packet k as `$lanes(k)`, at both widths.
+macro_rules! packets {
+    (|$out:ident, $lanes:ident| $body:block) => {
+        (
+            |$out: &mut [F32x8]| {
+                let $lanes = lanes;
+                $body
+            },
+            |$out: &mut [F32x16]| {
+                let $lanes = lanes16;
+                $body
+            },
+        )
+    };
 }
 
 const SEED: u32 = 0x5eed;
@@ -62,6 +84,12 @@ fn lanes(k: usize) -> U32x8 {
     U32x8::new([b, b + 1, b + 2, b + 3, b + 4, b + 5, b + 6, b + 7])
 }
 
+/// Index packets 16k..16k+16.
+fn lanes16(k: usize) -> U32x16 {
+    let b = 16 * k as u32;
+    U32x16::new(core::array::from_fn(|i| b + i as u32))
+}
+
 /// A generator on a grid, from its scalar and packet forms: the quality columns use an nx × ny = N
 /// grid, the timings a 64 × 32 grid, two values per index.
 macro_rules! grid_generator {
@@ -78,12 +106,12 @@ macro_rules! grid_generator {
                     (o[0], o[1]) = (p.x, p.y);
                 }
             },
-            packet: |out| {
+            packet: packets!(|out, lanes| {
                 for (k, o) in out.chunks_exact_mut(2).enumerate() {
                     let p = $packet(lanes(k), 64, 32, 0, SEED);
                     (o[0], o[1]) = (p.x, p.y);
                 }
-            },
+            }),
         }
     };
 }
@@ -100,11 +128,11 @@ fn generators() -> Vec<Generator> {
                     *o = seq::independent(i, 0, SEED);
                 }
             },
-            packet: |out| {
+            packet: packets!(|out, lanes| {
                 for (k, o) in out.iter_mut().enumerate() {
                     *o = seq::independent(lanes(k), 0, SEED);
                 }
-            },
+            }),
         },
         Generator {
             name: "stratified",
@@ -115,11 +143,11 @@ fn generators() -> Vec<Generator> {
                     *o = seq::stratified(i, BATCH, 0, SEED);
                 }
             },
-            packet: |out| {
+            packet: packets!(|out, lanes| {
                 for (k, o) in out.iter_mut().enumerate() {
                     *o = seq::stratified(lanes(k), BATCH, 0, SEED);
                 }
-            },
+            }),
         },
         Generator {
             name: "latin_hypercube",
@@ -135,11 +163,11 @@ fn generators() -> Vec<Generator> {
                     *o = seq::latin_hypercube(i, BATCH, 1, SEED);
                 }
             },
-            packet: |out| {
+            packet: packets!(|out, lanes| {
                 for (k, o) in out.iter_mut().enumerate() {
                     *o = seq::latin_hypercube(lanes(k), BATCH, 1, SEED);
                 }
-            },
+            }),
         },
         grid_generator!("jittered_2d", seq::jittered_2d, seq::jittered_2d),
         grid_generator!(
@@ -160,13 +188,13 @@ fn generators() -> Vec<Generator> {
                     }
                 }
             },
-            packet: |out| {
+            packet: packets!(|out, lanes| {
                 for (k, o) in out.chunks_exact_mut(4).enumerate() {
                     for (d, v) in o.iter_mut().enumerate() {
                         *v = seq::sobol(lanes(k), d as u32, SEED);
                     }
                 }
-            },
+            }),
         },
         Generator {
             name: "sobol_2d",
@@ -178,12 +206,12 @@ fn generators() -> Vec<Generator> {
                     (o[0], o[1]) = (p.x, p.y);
                 }
             },
-            packet: |out| {
+            packet: packets!(|out, lanes| {
                 for (k, o) in out.chunks_exact_mut(2).enumerate() {
                     let p = seq::sobol_2d(lanes(k), 0, SEED);
                     (o[0], o[1]) = (p.x, p.y);
                 }
-            },
+            }),
         },
         Generator {
             // Five values per sample: film x, y, lens x, y, time.
@@ -198,9 +226,9 @@ fn generators() -> Vec<Generator> {
                     o.copy_from_slice(&[c.film.x, c.film.y, c.lens.x, c.lens.y, c.time]);
                 }
             },
-            packet: |out| {
+            packet: packets!(|out, lanes| {
                 for (k, o) in out.chunks_exact_mut(5).enumerate() {
-                    let c = CameraSample::<U32x8>::generate(
+                    let c = CameraSample::generate(
                         [3, 4],
                         lanes(k),
                         SEED,
@@ -209,20 +237,22 @@ fn generators() -> Vec<Generator> {
                     );
                     o.copy_from_slice(&[c.film.x, c.film.y, c.lens.x, c.lens.y, c.time]);
                 }
-            },
+            }),
         },
     ]
 }
 
-/// Median ns per value of the scalar and packet kernels, interleaved in one run.
+/// Median ns per value of the scalar and packet kernels, interleaved in one run: the scalar loop,
+/// the scalar calls, x8 and x16.
 fn time_kernels(
     quick: bool,
     values: usize,
     mut scalar: impl FnMut(&mut [f32], bool),
-    mut packet: impl FnMut(&mut [F32x8]),
-) -> (f64, f64, f64) {
+    (mut packet, mut packet16): (impl FnMut(&mut [F32x8]), impl FnMut(&mut [F32x16])),
+) -> [f64; 4] {
     let mut out = vec![0f32; values];
     let mut out8 = vec![F32x8::ZERO; values / 8];
+    let mut out16 = vec![F32x16::ZERO; values / 16];
     let runs = if quick { 9 } else { 41 };
     let target = if quick { 2e-4 } else { 2e-3 };
     let mut reps = 1usize;
@@ -236,7 +266,7 @@ fn time_kernels(
         }
         reps *= 2;
     }
-    let (mut ts, mut tc, mut tp) = (vec![], vec![], vec![]);
+    let (mut ts, mut tc, mut tp, mut tq) = (vec![], vec![], vec![], vec![]);
     for _ in 0..runs {
         let t = Instant::now();
         for _ in 0..reps {
@@ -253,12 +283,17 @@ fn time_kernels(
             packet(black_box(&mut out8));
         }
         tp.push(t.elapsed().as_secs_f64());
+        let t = Instant::now();
+        for _ in 0..reps {
+            packet16(black_box(&mut out16));
+        }
+        tq.push(t.elapsed().as_secs_f64());
     }
     let med = |v: &mut Vec<f64>| {
         v.sort_by(f64::total_cmp);
         v[v.len() / 2] * 1e9 / (reps * values) as f64
     };
-    (med(&mut ts), med(&mut tc), med(&mut tp))
+    [med(&mut ts), med(&mut tc), med(&mut tp), med(&mut tq)]
 }
 
 /// RMS over 32 seeds of the L2-star discrepancy of the first 1024 points.
@@ -277,14 +312,15 @@ fn row(
     quick: bool,
     name: &'static str,
     points: fn(u32, u32, u32) -> Vec2,
-    times: (f64, f64, f64),
+    [scalar_ns, scalar_call_ns, x8_ns, x16_ns]: [f64; 4],
 ) -> SeqRow {
     let seeds = if quick { 16 } else { 64 };
     SeqRow {
         name,
-        scalar_ns: times.0,
-        scalar_call_ns: times.1,
-        x8_ns: times.2,
+        scalar_ns,
+        scalar_call_ns,
+        x8_ns,
+        x16_ns,
         l2_star_1024: l2_star_1024(points),
         slope_gaussian: quality::rmse_slope(
             points,
@@ -314,7 +350,7 @@ fn pcg_points(i: u32, _n: u32, s: u32) -> Vec2 {
 pub fn sequences(quick: bool) -> Vec<SeqRow> {
     let mut rows = vec![];
     for g in generators() {
-        // A camera sample is 5 values: 512 samples, or 64 packets of 8.
+        // A camera sample is 5 values: 512 samples, or 64 packets of 8, or 32 of 16.
         let values = if g.name.starts_with("camera") {
             5 * 512
         } else {
@@ -329,6 +365,10 @@ pub fn sequences(quick: bool) -> Vec<SeqRow> {
         std::array::from_fn(|i| i as u64),
         std::array::from_fn(|i| 7 + i as u64),
     );
+    let mut packet16 = Pcg32x16::new(
+        std::array::from_fn(|i| i as u64),
+        std::array::from_fn(|i| 7 + i as u64),
+    );
     let times = time_kernels(
         quick,
         BATCH as usize,
@@ -339,15 +379,22 @@ pub fn sequences(quick: bool) -> Vec<SeqRow> {
                 }
             }
         },
-        |out| {
-            for o in out.iter_mut() {
-                *o = packet.next_f32x8();
-            }
-        },
+        (
+            |out: &mut [F32x8]| {
+                for o in out.iter_mut() {
+                    *o = packet.next_f32x8();
+                }
+            },
+            |out: &mut [F32x16]| {
+                for o in out.iter_mut() {
+                    *o = packet16.next_f32x16();
+                }
+            },
+        ),
     );
     rows.push(row(
         quick,
-        "pcg32 (8 × rand_pcg | Pcg32x8)",
+        "pcg32 (8 × rand_pcg | Pcg32x8 | Pcg32x16)",
         pcg_points,
         times,
     ));

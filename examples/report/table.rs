@@ -205,7 +205,8 @@ pub fn stability(rows: &[(String, f64, f64, f64)]) -> Table {
 pub fn sequences(cfg: &Config, rows: &[SeqRow]) -> Table {
     let note = format!(
         "ns per f32 value: a plain loop of scalar calls over consecutive indices (LLVM may \
-         vectorise it), scalar calls one at a time on opaque indices, and x8.\n\
+         vectorise it), scalar calls one at a time on opaque indices, x8 and x16 (all four \
+         interleaved in one run).\n\
          L2*: the RMS L2-star discrepancy of the first 1024 points over 32 seeds (iid points: \
          {:.2e}).\n\
          Slopes: log RMSE against log N over N = 16…4096 and {} seeds, on the Gaussian \
@@ -219,6 +220,7 @@ pub fn sequences(cfg: &Config, rows: &[SeqRow]) -> Table {
         "call ns",
         "x8 ns",
         "x8 / call",
+        "x16 ns",
         "L2* 1024",
         "slope, Gaussian",
         "slope, disk",
@@ -231,6 +233,7 @@ pub fn sequences(cfg: &Config, rows: &[SeqRow]) -> Table {
             format!("{:.3}", r.scalar_call_ns),
             format!("{:.3}", r.x8_ns),
             ratio(r.scalar_call_ns, r.x8_ns),
+            format!("{:.3}", r.x16_ns),
             format!("{:.2e}", r.l2_star_1024),
             format!("{:.3}", r.slope_gaussian),
             format!("{:.3}", r.slope_disk),

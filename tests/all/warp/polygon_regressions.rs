@@ -303,6 +303,30 @@ fn by_area_sample_outside_its_edge_planes_keeps_the_pdf_functions_value() {
     }
 }
 
+/// A spherically sampled triangle with one vertex nearly antipodal to the other two (vertices
+/// near f32's smallest normal numbers, Ω = 1.09e-3 sr): at u₀ = 0 the sample lies on the arc
+/// between antipodes, which f32 places further from that edge's plane than the inside test's
+/// slack. The sample must carry the pdf that `pdf` gives there, 0 (it is dropped), not 1/Ω.
+#[test]
+fn spherical_sample_on_an_arc_between_near_antipodes_keeps_the_pdf_functions_value() {
+    let t = SphericalTriangle::new(
+        Vec3::new(9.414286e-38, 9.551468e-38, 9.551468e-38),
+        Vec3::new(9.553764e-38, 9.551468e-38, 9.551506e-38),
+        Vec3::new(-1.2653927e-38, -1.3045674e-38, -1.3045349e-38),
+    );
+    assert!(!t.by_area());
+    for u in [
+        Vec2::new(-7.729682e-37, 0.5020067),
+        Vec2::new(0.0, 0.25),
+        Vec2::new(0.001, 0.5),
+        Vec2::new(0.5, 0.5),
+        Vec2::ONE,
+    ] {
+        let (w, pdf) = t.sample(u);
+        assert_eq!(t.pdf(w).to_bits(), pdf.to_bits(), "u {u}: w {w}");
+    }
+}
+
 /// A shading point on a rectangle's own corner (3.5e-38 from its plane), described from the
 /// far corner 32 away: the f64 plane offset from there is ~1e-15 of rounding, and the light got
 /// Ω = π. It is edge-on (Ω 0) from both corners. And the inverse's reach: a rectangle 2e8 times

@@ -47,7 +47,8 @@ pub use lights::LightSampler;
 /// polygons large (≈ 1 sr), small (6e-5 / 0.035 sr) and below the spherical-sampling threshold
 /// (1e-6 sr for both: sampled by area); then the lights seen from the origin (a sphere far, tiny
 /// and around the point, a disk large and small, a triangle and a rectangle large and sampled by
-/// area) and the BSDFs. The tiny sphere has sin²θmax = 1e-4: smaller ones (down to 1e-12) are
+/// area) and the BSDFs. The bilinear polygons are the spherical polygons' large and small
+/// instances for a receiver's normal ([`TILTED`], and one with a corner below the horizon). The tiny sphere has sin²θmax = 1e-4: smaller ones (down to 1e-12) are
 /// tested in the scene's tests, where the χ² judge is the f64 pdf; here the f32 pdf's slack of
 /// 2ε in sin θ (a band 5e-5 of this cone's area) stays below what 1e6 samples see.
 macro_rules! families {
@@ -73,6 +74,16 @@ macro_rules! families {
                 .map(|s| warp::SolidAngleTriangle { v: triangle(s) });
             SphericalRectangle: warp::SolidAngleRectangle = [1.0, 0.2, 1e-3]
                 .map(|s| warp::SolidAngleRectangle { v: rectangle(s) });
+            BilinearTriangle: warp::CosineTriangle = [
+                (1.0, TILTED),
+                (1.0, Vec3::X),
+                (0.01, TILTED),
+            ].map(|(s, n)| warp::CosineTriangle { v: triangle(s), n });
+            BilinearRectangle: warp::CosineRectangle = [
+                (1.0, TILTED),
+                (1.0, Vec3::NEG_X),
+                (0.2, TILTED),
+            ].map(|(s, n)| warp::CosineRectangle { v: rectangle(s), n });
             Light: LightSampler = LightSampler::REGISTERED;
             BsdfLambert: BsdfLambert = [BsdfLambert { wo: Vec3::new(0.3, -0.2, 0.933_809) }];
             BsdfPhong: BsdfPhong = [
@@ -85,6 +96,12 @@ macro_rules! families {
 // The evidence in `verify` (std) generates its dispatch from the list too.
 #[cfg(feature = "std")]
 pub(crate) use families;
+
+/// The receiver's normal of the bilinear polygons: tilted 37° towards +x, so that the cosine
+/// varies by a factor 2–9 across the registry's large polygons. Their second instances face +x
+/// (the triangle) and −x (the rectangle), which puts a corner below the horizon, at the
+/// weight's floor.
+pub const TILTED: Vec3 = Vec3::new(0.6, 0.0, 0.8);
 
 /// The test triangle of size `s`, about 1.2 s² sr one unit away from the shading point.
 pub const fn triangle(s: f32) -> [Vec3; 3] {

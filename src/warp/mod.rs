@@ -1,6 +1,7 @@
 //! Warps: maps from the unit square to the domains of direct illumination, each with its pdf and
 //! its inverse, side by side in the file of its family (`disk`, `hemisphere`, `sphere`, `cone`,
-//! `phong`, `triangle`, `spherical_triangle`, `spherical_rectangle`, `tent`).
+//! `phong`, `triangle`, `spherical_triangle`, `spherical_rectangle`, `tent`), and the
+//! bilinear warp composed with the spherical polygons (`bilinear`).
 //!
 //! # One function, every width
 //!
@@ -44,6 +45,7 @@
 //!   pdf 0, never NaN or ∞: callers drop samples with pdf 0.
 //! - Nothing panics, loops or allocates on any input.
 
+mod bilinear;
 mod common;
 mod cone;
 mod disk;
@@ -58,6 +60,12 @@ mod spherical_triangle;
 mod tent;
 mod triangle;
 
+pub use bilinear::{
+    BILINEAR_MIN_WEIGHT, BilinearRectangle, BilinearTriangle, CosineRectangle, CosineTriangle,
+    bilinear, bilinear_inverse, bilinear_pdf, bilinear_rectangle, bilinear_rectangle_inverse,
+    bilinear_rectangle_pdf, bilinear_triangle, bilinear_triangle_inverse, bilinear_triangle_pdf,
+    linear, linear_inverse, linear_pdf,
+};
 pub use common::ONE_MINUS_EPS;
 pub use cone::{
     UniformCone, cone_h_from_cos, cone_h_from_sin2, uniform_cone, uniform_cone_inverse,

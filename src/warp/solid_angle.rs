@@ -123,7 +123,7 @@ pub fn polygon_size(pdf: f32, min_sr: f32) -> &'static str {
 /// True when `x` lies on the parallelogram corner + s·ex + t·ey (`v` = corner, ex, ey), within
 /// 1e-5 of the light's size and distance, in the plane and across it: an f32 point far from the
 /// origin is rounded on the scale of its distance, not of the light.
-fn on_parallelogram(x: Vec3, v: [Vec3; 3]) -> bool {
+pub(crate) fn on_parallelogram(x: Vec3, v: [Vec3; 3]) -> bool {
     let d = x.as_dvec3() - v[0].as_dvec3();
     let (ex, ey) = (v[1].as_dvec3(), v[2].as_dvec3());
     // (s, t) from the 2×2 Gram system, so that edges only nearly orthogonal (as rounding leaves

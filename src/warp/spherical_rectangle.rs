@@ -626,6 +626,23 @@ impl<P: Point3<Lane = L>, L: Math> SphericalRectangle<P> {
         self.s.by_area
     }
 
+    /// The unit directions of the corners where the square's corners (0, 0), (1, 0), (0, 1),
+    /// (1, 1) land, by either map: corner, corner + ex, corner + ey, corner + ex + ey.
+    #[inline(always)]
+    pub(crate) fn square_corners(&self) -> [V3<L>; 4] {
+        let s = &self.s;
+        let c1 = s.corner + s.ex;
+        [s.corner, c1, s.corner + s.ey, c1 + s.ey].map(|p| p.normalize())
+    }
+
+    /// The point of the rectangle's plane in direction `w` (any positive multiple of a point):
+    /// w·|f|²/(w·f), f the foot of the perpendicular, at the given scale.
+    #[inline(always)]
+    pub(crate) fn on_plane(&self, w: V3<L>) -> V3<L> {
+        let f = self.s.foot;
+        w.scale(f.dot(f) / w.dot(f) * self.s.unscale)
+    }
+
     /// See [`spherical_rectangle`].
     // Always inlined as well (unlike the triangle's sample, which was slower so): 8 % off the
     // free function in SSE2, the same in AVX2. Not on bare metal, as the set-up.

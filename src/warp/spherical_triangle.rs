@@ -353,6 +353,15 @@ impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
         (self.s.h * self.s.unscale, P::from_lanes(self.s.n))
     }
 
+    /// The unit directions where the square's corners (0, 0), (1, 0), (0, 1), (1, 1) land under
+    /// Arvo's map: B, B, A, C as relabelled (see `setup`). Not where the triangle is sampled by
+    /// area, whose map places them otherwise.
+    #[inline(always)]
+    pub(crate) fn square_corners(&self) -> [V3<L>; 4] {
+        let s = &self.s;
+        [s.ub, s.ub, s.ua, s.uc]
+    }
+
     /// See [`spherical_triangle`].
     #[inline]
     pub fn sample(&self, u: P::Vec2) -> (P, L) {

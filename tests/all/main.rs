@@ -32,6 +32,8 @@ mod seq {
 mod warp {
     mod accuracy;
     #[cfg(not(target_family = "wasm"))]
+    mod bilinear;
+    #[cfg(not(target_family = "wasm"))]
     mod distribution;
     mod hard_cases;
     mod lanes;

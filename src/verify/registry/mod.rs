@@ -20,6 +20,7 @@
 //! }
 //! ```
 
+mod bilinear;
 mod bsdf;
 mod cone;
 mod disk;

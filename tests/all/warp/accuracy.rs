@@ -1017,7 +1017,7 @@ fn every_registered_sampler_matches_its_f64_instance() {
             // slope times the sample's own error, which is not the pdf's error.
             let pdf_r = s.pdf(x.as_dvec3());
             let scale = match s {
-                Sampler::SphericalRectangle(_) => r.length(),
+                Sampler::SphericalRectangle(_) | Sampler::BilinearRectangle(_) => r.length(),
                 _ => 1.0,
             };
             let e = (x.as_dvec3() - r).length() / scale;

@@ -123,8 +123,9 @@ fn warp_case(s: Sampler) -> Warp {
         domain: domain(s),
         nan_coords: s.nan_coords(),
         fixed: match s {
-            Sampler::SphericalTriangle(_) => Some(Vec3::Z),
+            Sampler::SphericalTriangle(_) | Sampler::BilinearTriangle(_) => Some(Vec3::Z),
             Sampler::SphericalRectangle(r) => Some(r.v[0]),
+            Sampler::BilinearRectangle(r) => Some(r.v[0]),
             _ => None,
         },
     }
@@ -157,7 +158,9 @@ fn domain(s: Sampler) -> Check {
             }
         }),
         Sampler::SphericalTriangle(t) => sph_tri_domain(t.v[0], t.v[1], t.v[2]),
+        Sampler::BilinearTriangle(t) => sph_tri_domain(t.v[0], t.v[1], t.v[2]),
         Sampler::SphericalRectangle(r) => sph_rect_domain(r.v[0], r.v[1], r.v[2]),
+        Sampler::BilinearRectangle(r) => sph_rect_domain(r.v[0], r.v[1], r.v[2]),
         _ => Box::new(move |x| {
             let p = Vec3::new(x[0], x[1], x[2]);
             check(s.in_domain(p), || format!("{}: {x:?} outside", s.name()))

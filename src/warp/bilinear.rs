@@ -1,0 +1,469 @@
+//! The bilinear warp of the square (Hart, Pharr, Müller, Lopes, McGuire, Wyman: "Practical
+//! Product Sampling by Fitting and Composing Warps", EGSR 2020), and the spherical polygons
+//! composed with it so that their samples follow the receiver's cosine: [`bilinear_triangle`],
+//! [`bilinear_rectangle`].
+//!
+//! The spherical maps send the square's corners to the polygon's corners, so a density on the
+//! square that is bilinear in the cosines max(0.01, n·ω) at those corners, warped through the
+//! uniform spherical map, approximates the cosine factor of a Lambertian receiver with normal n.
+//! The pdf per steradian is the spherical map's times the bilinear density at u′, where u′ is
+//! the spherical map's inverse of the direction.
+
+use core::fmt;
+
+use glam::Vec3;
+
+use crate::lane::{V2, V3};
+use crate::math::Math;
+use crate::point::{Point2, Point3};
+use crate::warp::common::{clamp_u, clamp01};
+use crate::warp::family::{is_unit, lanes3};
+use crate::warp::solid_angle::{on_parallelogram, polygon_size};
+use crate::warp::{
+    Family, SPHERICAL_RECTANGLE_MIN_SR, SPHERICAL_TRIANGLE_MIN_SR, SphericalRectangle,
+    SphericalTriangle,
+};
+
+/// The smallest corner weight: a corner below the receiver's horizon (or nearly so) keeps 1 % of
+/// a facing corner's density, so that no part of the light gets density 0 (as in Hart et al.).
+pub const BILINEAR_MIN_WEIGHT: f32 = 0.01;
+
+/// a + t(b − a): exactly a where a = b, so that equal weights leave every map below exact.
+#[inline(always)]
+fn lerp<L: Math>(t: L, a: L, b: L) -> L {
+    t.mul_add(b - a, a)
+}
+
+/// [0, 1] → [0, 1] with density 2((1 − x)a + x·b)/(a + b), for weights a, b ≥ 0, not both 0: the
+/// root of the quadratic CDF, x = u(a + b) / (a + √(a² + u(b² − a²))), whose denominator is a
+/// sum of non-negative terms, so that nothing divides by a − b or cancels as a → b. With a = b
+/// the factor (a + b)/(a + √a²) is exactly 1, and x = u bit for bit.
+///
+/// u is clamped to [0, 1]; NaN gives NaN.
+#[inline(always)]
+pub fn linear<L: Math>(u: L, a: L, b: L) -> L {
+    let u = clamp01(u);
+    let a2 = a * a;
+    let root = u.mul_add(b.mul_add(b, -a2), a2).sqrt();
+    // NaN goes in the second operand of min, which returns it.
+    L::ONE.min(u * ((a + b) / (a + root)))
+}
+
+/// pdf of [`linear`]: 2((1 − x)a + x·b)/(a + b) on [0, 1], else 0 (also for NaN).
+#[inline(always)]
+pub fn linear_pdf<L: Math>(x: L, a: L, b: L) -> L {
+    let inside = x.ge(L::ZERO) & x.le(L::ONE);
+    L::select(inside, L::TWO * lerp(x, a, b) / (a + b), L::ZERO)
+}
+
+/// Inverse of [`linear`]: u = x(2a + x(b − a))/(a + b), the CDF, a product of non-negative
+/// terms (exactly x where a = b). x is clamped to [0, 1]; NaN gives NaN.
+#[inline(always)]
+pub fn linear_inverse<L: Math>(x: L, a: L, b: L) -> L {
+    let x = clamp01(x);
+    x * (x.mul_add(b - a, a + a) / (a + b))
+}
+
+/// The square → the square with density 4·bilerp(x, y) / Σw, bilinear in the corner weights
+/// `w` = [w₀₀, w₁₀, w₀₁, w₁₁] (w_xy the weight at corner (x, y)), all positive and finite: y
+/// from its linear marginal with ends (w₀₀ + w₁₀, w₀₁ + w₁₁), then x from the linear conditional
+/// at that y. Equal weights give the identity, bit for bit.
+///
+/// u is clamped to [0, 1]²; NaN gives NaN in that coordinate, and NaN in u₁ NaN in both.
+#[inline(always)]
+pub fn bilinear<P: Point2<Lane = L>, L: Math>(u: P, w: [L; 4]) -> P {
+    P::from_lanes(bilinear_lanes(u.to_lanes(), w))
+}
+
+#[inline(always)]
+fn bilinear_lanes<L: Math>(u: V2<L>, w: [L; 4]) -> V2<L> {
+    let [w00, w10, w01, w11] = w;
+    let y = linear(u.y, w00 + w10, w01 + w11);
+    let x = linear(u.x, lerp(y, w00, w01), lerp(y, w10, w11));
+    V2::new(x, y)
+}
+
+/// pdf of [`bilinear`] per unit area: 4·bilerp(x, y) / Σw on [0, 1]², else 0 (also for NaN).
+/// Exactly 1 everywhere in the square for equal weights.
+#[inline(always)]
+pub fn bilinear_pdf<P: Point2<Lane = L>, L: Math>(p: P, w: [L; 4]) -> L {
+    bilinear_pdf_lanes(p.to_lanes(), w)
+}
+
+#[inline(always)]
+fn bilinear_pdf_lanes<L: Math>(p: V2<L>, w: [L; 4]) -> L {
+    let [w00, w10, w01, w11] = w;
+    let inside = p.x.ge(L::ZERO) & p.x.le(L::ONE) & p.y.ge(L::ZERO) & p.y.le(L::ONE);
+    let density = lerp(p.x, lerp(p.y, w00, w01), lerp(p.y, w10, w11));
+    let sum = (w00 + w10) + (w01 + w11);
+    L::select(inside, L::c(4.0) * density / sum, L::ZERO)
+}
+
+/// Inverse of [`bilinear`]: each coordinate through [`linear_inverse`], y first. p is clamped
+/// to [0, 1]²; NaN gives NaN.
+#[inline(always)]
+pub fn bilinear_inverse<P: Point2<Lane = L>, L: Math>(p: P, w: [L; 4]) -> P {
+    let [w00, w10, w01, w11] = w;
+    let p = clamp_u(p.to_lanes());
+    let x = linear_inverse(p.x, lerp(p.y, w00, w01), lerp(p.y, w10, w11));
+    P::from_lanes(V2::new(x, linear_inverse(p.y, w00 + w10, w01 + w11)))
+}
+
+/// The corner weights max(0.01, n·ω̂) for the unit directions `corners` where the square's
+/// corners land, and unit normal `n`. Equal weights (the plain spherical map) where `uniform`,
+/// and wherever a weight is not finite (a non-finite normal); NaN in n gives 0.01 at every
+/// corner, also the plain map.
+#[inline(always)]
+fn cosine_weights<L: Math>(corners: [V3<L>; 4], n: V3<L>, uniform: L::Mask) -> [L; 4] {
+    let floor = L::c(BILINEAR_MIN_WEIGHT as f64);
+    let w = corners.map(|d| {
+        let c = n.dot(d);
+        L::select(c.gt(floor), c, floor)
+    });
+    let bad = uniform | !(w[0] + w[1] + w[2] + w[3]).is_finite();
+    w.map(|x| L::select(bad, floor, x))
+}
+
+/// The sample of a spherical map `base` at the bilinear warp of u, with the composed pdf: the
+/// base pdf times the bilinear density at the u′ it was given, kept only where the base kept the
+/// sample (its pdf > 0).
+#[inline(always)]
+fn sample_through<L: Math>(
+    u: V2<L>,
+    w: [L; 4],
+    base: impl FnOnce(V2<L>) -> (V3<L>, L),
+) -> (V3<L>, L) {
+    let v = bilinear_lanes(clamp_u(u), w);
+    let (x, p) = base(v);
+    (x, compose(p, v, w))
+}
+
+/// The base pdf `p` times the bilinear density at `v`, or 0 where `p` is 0 (`v` may be NaN
+/// there).
+#[inline(always)]
+fn compose<L: Math>(p: L, v: V2<L>, w: [L; 4]) -> L {
+    L::select(p.gt(L::ZERO), p * bilinear_pdf_lanes(v, w), L::ZERO)
+}
+
+/// A triangle set up for cosine-weighted sampling at one shading point: [`SphericalTriangle`]
+/// behind the bilinear warp, with weights max(0.01, n·ω̂) at the directions of the square's
+/// corners under Arvo's map (B, B, A, C: u₁ = 0 is the apex B for any u₀, and u₁ = 1 the arc
+/// from A to C). [`bilinear_triangle`], [`bilinear_triangle_pdf`] and
+/// [`bilinear_triangle_inverse`] are this type, built and used once.
+///
+/// Where the triangle is sampled by area (below [`SPHERICAL_TRIANGLE_MIN_SR`] or above
+/// [`SPHERICAL_TRIANGLE_MAX_SR`](crate::warp::SPHERICAL_TRIANGLE_MAX_SR)), whose map has other
+/// corners, the weights are equal and it is sampled exactly as by [`SphericalTriangle`]; so it is
+/// for the zero normal.
+///
+/// ```
+/// use glam::{Vec2, Vec3};
+/// use mcsample::warp::{BilinearTriangle, SphericalTriangle};
+///
+/// let (a, b, c) = (Vec3::new(-1.0, -1.0, 2.0), Vec3::new(1.0, -1.0, 2.0), Vec3::new(0.0, 1.0, 1.0));
+/// let n = Vec3::new(0.6, 0.0, 0.8);
+/// let tri = BilinearTriangle::new(a, b, c, n);
+/// let (w, pdf) = tri.sample(Vec2::new(0.3, 0.8));
+/// assert!(pdf > 0.0 && ((tri.pdf(w) - pdf) / pdf).abs() < 1e-4);
+/// // No normal: the plain solid-angle sampler, bit for bit.
+/// let plain = SphericalTriangle::new(a, b, c).sample(Vec2::new(0.3, 0.8));
+/// assert_eq!(BilinearTriangle::new(a, b, c, Vec3::ZERO).sample(Vec2::new(0.3, 0.8)), plain);
+/// ```
+#[derive(Clone, Copy)]
+pub struct BilinearTriangle<P: Point3> {
+    base: SphericalTriangle<P>,
+    w: [P::Lane; 4],
+}
+
+impl<P: Point3<Lane = L>, L: Math> BilinearTriangle<P> {
+    /// The triangle with vertices `a`, `b`, `c` relative to the shading point, in either winding,
+    /// weighted for the receiver's unit normal `n` (zero for none).
+    #[inline(always)]
+    pub fn new(a: P, b: P, c: P, n: P) -> Self {
+        let base = SphericalTriangle::new(a, b, c);
+        let w = cosine_weights(base.square_corners(), n.to_lanes(), base.by_area());
+        Self { base, w }
+    }
+
+    /// The corner weights [w₀₀, w₁₀, w₀₁, w₁₁] of the bilinear warp.
+    #[inline]
+    pub fn weights(&self) -> [L; 4] {
+        self.w
+    }
+
+    /// See [`bilinear_triangle`].
+    #[inline]
+    pub fn sample(&self, u: P::Vec2) -> (P, L) {
+        let (w, pdf) = sample_through(u.to_lanes(), self.w, |v| {
+            let (w, p) = self.base.sample(P::Vec2::from_lanes(v));
+            (w.to_lanes(), p)
+        });
+        (P::from_lanes(w), pdf)
+    }
+
+    /// See [`bilinear_triangle_pdf`].
+    #[inline]
+    pub fn pdf(&self, w: P) -> L {
+        compose(self.base.pdf(w), self.base.inverse(w).to_lanes(), self.w)
+    }
+
+    /// See [`bilinear_triangle_inverse`].
+    #[inline]
+    pub fn inverse(&self, w: P) -> P::Vec2 {
+        bilinear_inverse(self.base.inverse(w), self.w)
+    }
+}
+
+/// A direction towards triangle (a, b, c) (vertices relative to the shading point, either
+/// winding), distributed approximately as the cosine n·ω of a receiver with unit normal `n`
+/// over the triangle's solid angle, and its pdf per steradian: Arvo's map (see
+/// [`spherical_triangle`](crate::warp::spherical_triangle)) at [`bilinear`]`(u, w)` with corner
+/// weights max(0.01, n·ω̂) (see [`BilinearTriangle`]). The pdf is 1/Ω times the bilinear density
+/// at that u′; [`bilinear_triangle_pdf`] takes u′ from the spherical inverse of the direction
+/// instead, and agrees within the inverse's round trip (measured: see the crate's tests).
+///
+/// u is clamped to [0, 1]². Bad input as for the spherical triangle: degenerate triangles and
+/// NaN in u give pdf 0 and direction +z. The zero normal, and a non-finite one, give the plain
+/// spherical sampler.
+#[inline]
+pub fn bilinear_triangle<P: Point2<Lane = L>, L: Math>(
+    u: P,
+    a: P::Vec3,
+    b: P::Vec3,
+    c: P::Vec3,
+    n: P::Vec3,
+) -> (P::Vec3, L) {
+    BilinearTriangle::new(a, b, c, n).sample(u)
+}
+
+/// pdf per steradian that [`bilinear_triangle`] returns unit direction `w`: the spherical
+/// triangle's pdf times the bilinear density at its inverse of `w`; 0 where the spherical pdf is
+/// 0 (outside, degenerate, NaN).
+#[inline]
+pub fn bilinear_triangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P, c: P, n: P) -> L {
+    BilinearTriangle::new(a, b, c, n).pdf(w)
+}
+
+/// Inverse of [`bilinear_triangle`]: [`bilinear_inverse`] of the spherical triangle's inverse.
+/// NaN gives NaN.
+#[inline]
+pub fn bilinear_triangle_inverse<P: Point3<Lane = L>, L: Math>(
+    w: P,
+    a: P,
+    b: P,
+    c: P,
+    n: P,
+) -> P::Vec2 {
+    BilinearTriangle::new(a, b, c, n).inverse(w)
+}
+
+/// A rectangle set up for cosine-weighted sampling at one shading point: [`SphericalRectangle`]
+/// behind the bilinear warp, with weights max(0.01, n·ω̂) at its corners (u = (0, 0) is
+/// `corner`, (1, 0) corner + ex, (0, 1) corner + ey). The area fallback maps the square's corners
+/// to the same corners, so it is weighted too. [`bilinear_rectangle`], [`bilinear_rectangle_pdf`]
+/// and [`bilinear_rectangle_inverse`] are this type, built and used once.
+#[derive(Clone, Copy)]
+pub struct BilinearRectangle<P: Point3> {
+    base: SphericalRectangle<P>,
+    w: [P::Lane; 4],
+}
+
+impl<P: Point3<Lane = L>, L: Math> BilinearRectangle<P> {
+    /// The rectangle corner + s·ex + t·ey relative to the shading point (ex ⟂ ey), weighted for
+    /// the receiver's unit normal `n` (zero for none).
+    #[inline(always)]
+    pub fn new(corner: P, ex: P, ey: P, n: P) -> Self {
+        let base = SphericalRectangle::new(corner, ex, ey);
+        let w = cosine_weights(base.square_corners(), n.to_lanes(), L::Mask::default());
+        Self { base, w }
+    }
+
+    /// The corner weights [w₀₀, w₁₀, w₀₁, w₁₁] of the bilinear warp.
+    #[inline]
+    pub fn weights(&self) -> [L; 4] {
+        self.w
+    }
+
+    /// See [`bilinear_rectangle`].
+    #[inline]
+    pub fn sample(&self, u: P::Vec2) -> (P, L) {
+        let (p, pdf) = sample_through(u.to_lanes(), self.w, |v| {
+            let (p, pdf) = self.base.sample(P::Vec2::from_lanes(v));
+            (p.to_lanes(), pdf)
+        });
+        (P::from_lanes(p), pdf)
+    }
+
+    /// See [`bilinear_rectangle_pdf`].
+    #[inline]
+    pub fn pdf(&self, p: P) -> L {
+        // The inverse reads a point of the light; the pdf accepts any positive multiple.
+        let on_plane = P::from_lanes(self.base.on_plane(p.to_lanes()));
+        compose(
+            self.base.pdf(p),
+            self.base.inverse(on_plane).to_lanes(),
+            self.w,
+        )
+    }
+
+    /// See [`bilinear_rectangle_inverse`].
+    #[inline]
+    pub fn inverse(&self, p: P) -> P::Vec2 {
+        bilinear_inverse(self.base.inverse(p), self.w)
+    }
+}
+
+/// A point on the rectangle corner + s·ex + t·ey (relative to the shading point; ex ⟂ ey),
+/// distributed approximately as the cosine n·ω of a receiver with unit normal `n` over the
+/// rectangle's solid angle, and its pdf per steradian: Ureña et al.'s map (see
+/// [`spherical_rectangle`](crate::warp::spherical_rectangle)) at [`bilinear`]`(u, w)` with
+/// weights max(0.01, n·ω̂) at the corners. The pdf is the spherical map's times the bilinear
+/// density at that u′; [`bilinear_rectangle_pdf`] takes u′ from the inverse of the point and
+/// agrees within its round trip.
+///
+/// u is clamped to [0, 1]². Bad input as for the spherical rectangle: degenerate or edge-on
+/// rectangles and NaN in u give pdf 0 and the point `corner`. The zero normal, and a non-finite
+/// one, give the plain spherical sampler.
+#[inline]
+pub fn bilinear_rectangle<P: Point2<Lane = L>, L: Math>(
+    u: P,
+    corner: P::Vec3,
+    ex: P::Vec3,
+    ey: P::Vec3,
+    n: P::Vec3,
+) -> (P::Vec3, L) {
+    BilinearRectangle::new(corner, ex, ey, n).sample(u)
+}
+
+/// pdf per steradian that [`bilinear_rectangle`] returns a point in direction `p` (any positive
+/// multiple of the point): the spherical rectangle's pdf times the bilinear density at its
+/// inverse of the point of the light in that direction; 0 where the spherical pdf is 0.
+#[inline]
+pub fn bilinear_rectangle_pdf<P: Point3<Lane = L>, L: Math>(
+    p: P,
+    corner: P,
+    ex: P,
+    ey: P,
+    n: P,
+) -> L {
+    BilinearRectangle::new(corner, ex, ey, n).pdf(p)
+}
+
+/// Inverse of [`bilinear_rectangle`]: [`bilinear_inverse`] of the spherical rectangle's inverse.
+/// NaN gives NaN, as does a rectangle beyond
+/// [`SPHERICAL_RECTANGLE_INVERSE_REACH`](crate::warp::SPHERICAL_RECTANGLE_INVERSE_REACH).
+#[inline]
+pub fn bilinear_rectangle_inverse<P: Point3<Lane = L>, L: Math>(
+    p: P,
+    corner: P,
+    ex: P,
+    ey: P,
+    n: P,
+) -> P::Vec2 {
+    BilinearRectangle::new(corner, ex, ey, n).inverse(p)
+}
+
+/// The registry's [`bilinear_triangle`] towards vertices `v` for the receiver's normal `n`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CosineTriangle {
+    /// The vertices.
+    pub v: [Vec3; 3],
+    /// The receiver's unit normal.
+    pub n: Vec3,
+}
+
+impl Family for CosineTriangle {
+    fn name(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let [a, b, c] = self.v;
+        let base = SphericalTriangle::new(a, b, c);
+        let pdf = base.sample(glam::Vec2::splat(0.5)).1;
+        write!(
+            f,
+            "bilinear_triangle {}",
+            polygon_size(pdf, SPHERICAL_TRIANGLE_MIN_SR)
+        )?;
+        horizon(f, [a, b, c].map(|v| v.normalize()), self.n)
+    }
+    fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
+        let (v, n) = (self.v.map(lanes3::<L>), lanes3::<L>(self.n));
+        // Through `black_box`, as the spherical triangle's: the set-up is paid at every sample.
+        // The pdf is the pdf function's at the sample, the registry's contract, where the
+        // sample is kept (a dropped sample's stand-in direction may lie on the light).
+        #[inline(always)]
+        move |u| {
+            let ([a, b, c], n) = core::hint::black_box((v, n));
+            let t = BilinearTriangle::new(a, b, c, n);
+            let (w, kept) = t.sample(u);
+            (w, L::select(kept.gt(L::ZERO), t.pdf(w), L::ZERO))
+        }
+    }
+    fn pdf<L: Math>(&self, x: V3<L>) -> L {
+        let [a, b, c] = self.v.map(lanes3::<L>);
+        bilinear_triangle_pdf(x, a, b, c, lanes3(self.n))
+    }
+    fn inverse<L: Math>(&self, x: V3<L>) -> Option<V2<L>> {
+        let [a, b, c] = self.v.map(lanes3::<L>);
+        Some(bilinear_triangle_inverse(x, a, b, c, lanes3(self.n)))
+    }
+    fn in_domain(&self, x: Vec3) -> bool {
+        is_unit(x)
+    }
+}
+
+/// The registry's [`bilinear_rectangle`] towards corner + s·ex + t·ey (`v` is corner, ex, ey)
+/// for the receiver's normal `n`. Its sample is the point on the light.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CosineRectangle {
+    /// Corner, ex, ey.
+    pub v: [Vec3; 3],
+    /// The receiver's unit normal.
+    pub n: Vec3,
+}
+
+impl Family for CosineRectangle {
+    fn name(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let [c, ex, ey] = self.v;
+        let base = SphericalRectangle::new(c, ex, ey);
+        let pdf = base.sample(glam::Vec2::splat(0.5)).1;
+        write!(
+            f,
+            "bilinear_rectangle {}",
+            polygon_size(pdf, SPHERICAL_RECTANGLE_MIN_SR)
+        )?;
+        horizon(
+            f,
+            [c, c + ex, c + ey, c + ex + ey].map(|v| v.normalize()),
+            self.n,
+        )
+    }
+    fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
+        let (v, n) = (self.v.map(lanes3::<L>), lanes3::<L>(self.n));
+        #[inline(always)]
+        move |u| {
+            let ([c, ex, ey], n) = core::hint::black_box((v, n));
+            let r = BilinearRectangle::new(c, ex, ey, n);
+            let (p, kept) = r.sample(u);
+            (p, L::select(kept.gt(L::ZERO), r.pdf(p), L::ZERO))
+        }
+    }
+    fn pdf<L: Math>(&self, x: V3<L>) -> L {
+        let [c, ex, ey] = self.v.map(lanes3::<L>);
+        bilinear_rectangle_pdf(x, c, ex, ey, lanes3(self.n))
+    }
+    fn inverse<L: Math>(&self, x: V3<L>) -> Option<V2<L>> {
+        let [c, ex, ey] = self.v.map(lanes3::<L>);
+        Some(bilinear_rectangle_inverse(x, c, ex, ey, lanes3(self.n)))
+    }
+    fn in_domain(&self, x: Vec3) -> bool {
+        on_parallelogram(x, self.v)
+    }
+}
+
+/// The name's last word where some corner of the light is at or below the weight's floor (the
+/// receiver's horizon, nearly): " horizon".
+fn horizon<const N: usize>(f: &mut fmt::Formatter<'_>, dirs: [Vec3; N], n: Vec3) -> fmt::Result {
+    if dirs.iter().any(|d| n.dot(*d) <= BILINEAR_MIN_WEIGHT) {
+        f.write_str(" horizon")?;
+    }
+    Ok(())
+}

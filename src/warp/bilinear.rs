@@ -18,6 +18,7 @@ use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::warp::common::{clamp_u, clamp01};
 use crate::warp::family::{is_unit, lanes3};
+use crate::warp::polygon::pow2_scale;
 use crate::warp::solid_angle::{on_parallelogram, polygon_size};
 use crate::warp::{
     Family, SPHERICAL_RECTANGLE_MIN_SR, SPHERICAL_TRIANGLE_MIN_SR, SphericalRectangle,
@@ -28,10 +29,12 @@ use crate::warp::{
 /// a facing corner's density, so that no part of the light gets density 0 (as in Hart et al.).
 pub const BILINEAR_MIN_WEIGHT: f32 = 0.01;
 
-/// a + t(b − a): exactly a where a = b, so that equal weights leave every map below exact.
+/// (1 − t)a + t·b for t ∈ [0, 1] and a, b ≥ 0: a sum of non-negative terms, exact at both ends
+/// (a + t(b − a) cancels to 0 at t = 1 when b is below an ulp of a), and exactly a where a = b,
+/// so that equal weights leave every map below exact.
 #[inline(always)]
 fn lerp<L: Math>(t: L, a: L, b: L) -> L {
-    t.mul_add(b - a, a)
+    L::select(a.eq(b), a, (L::ONE - t).mul_add(a, t * b))
 }
 
 /// [0, 1] → [0, 1] with density 2((1 − x)a + x·b)/(a + b), for weights a, b ≥ 0, not both 0: the
@@ -39,7 +42,7 @@ fn lerp<L: Math>(t: L, a: L, b: L) -> L {
 /// sum of non-negative terms, so that nothing divides by a − b or cancels as a → b. With a = b
 /// the factor (a + b)/(a + √a²) is exactly 1, and x = u bit for bit.
 ///
-/// u is clamped to [0, 1]; NaN gives NaN.
+/// u is clamped to [0, 1]; NaN gives NaN (not canonicalised: [`bilinear`] does that once).
 #[inline(always)]
 pub fn linear<L: Math>(u: L, a: L, b: L) -> L {
     let u = clamp01(u);
@@ -57,7 +60,7 @@ pub fn linear_pdf<L: Math>(x: L, a: L, b: L) -> L {
 }
 
 /// Inverse of [`linear`]: u = x(2a + x(b − a))/(a + b), the CDF, a product of non-negative
-/// terms (exactly x where a = b). x is clamped to [0, 1]; NaN gives NaN.
+/// terms (exactly x where a = b). x is clamped to [0, 1]; NaN gives NaN (not canonicalised).
 #[inline(always)]
 pub fn linear_inverse<L: Math>(x: L, a: L, b: L) -> L {
     let x = clamp01(x);
@@ -65,14 +68,34 @@ pub fn linear_inverse<L: Math>(x: L, a: L, b: L) -> L {
 }
 
 /// The square → the square with density 4·bilerp(x, y) / Σw, bilinear in the corner weights
-/// `w` = [w₀₀, w₁₀, w₀₁, w₁₁] (w_xy the weight at corner (x, y)), all positive and finite: y
-/// from its linear marginal with ends (w₀₀ + w₁₀, w₀₁ + w₁₁), then x from the linear conditional
-/// at that y. Equal weights give the identity, bit for bit.
+/// `w` = [w₀₀, w₁₀, w₀₁, w₁₁] (w_xy the weight at corner (x, y)): y from its linear marginal
+/// with ends (w₀₀ + w₁₀, w₀₁ + w₁₁), then x from the linear conditional at that y. Equal weights
+/// give the identity, bit for bit.
 ///
-/// u is clamped to [0, 1]²; NaN gives NaN in that coordinate, and NaN in u₁ NaN in both.
+/// The weights are positive and finite, at any scale: only their ratios matter, and they are
+/// first scaled by a power of two (exactly) so that their squares stay in range; a weight below
+/// 2⁻⁴⁰ of the largest counts as 2⁻⁴⁰ of it. Otherwise (a weight ≤ 0, NaN or ∞) they count as
+/// equal, the identity with pdf 1, in all three functions.
+///
+/// u is clamped to [0, 1]²; NaN gives the canonical NaN in that coordinate, and NaN in u₁ in
+/// both.
 #[inline(always)]
 pub fn bilinear<P: Point2<Lane = L>, L: Math>(u: P, w: [L; 4]) -> P {
-    P::from_lanes(bilinear_lanes(u.to_lanes(), w))
+    P::from_lanes(bilinear_lanes(u.to_lanes(), admissible(w)).canon())
+}
+
+/// The weights at a scale whose squares cannot overflow or underflow (the largest in [2⁻¹⁶,
+/// 2¹⁶], by an exact power of two, which leaves every result bit for bit as it was), none below
+/// 2⁻⁴⁰ of the largest (whose square would underflow, and [`linear`] divide 0 by 0 at u = 0), or
+/// all 1 where any is not positive and finite.
+#[inline(always)]
+fn admissible<L: Math>(w: [L; 4]) -> [L; 4] {
+    let m = w[0].max(w[1]).max(w[2]).max(w[3]);
+    let ok = w[0].gt(L::ZERO) & w[1].gt(L::ZERO) & w[2].gt(L::ZERO) & w[3].gt(L::ZERO);
+    let ok = ok & m.is_finite();
+    let s = pow2_scale(m);
+    let least = m * s * L::c(9.094947017729282e-13);
+    w.map(|x| L::select(ok, (x * s).max(least), L::ONE))
 }
 
 #[inline(always)]
@@ -84,10 +107,12 @@ fn bilinear_lanes<L: Math>(u: V2<L>, w: [L; 4]) -> V2<L> {
 }
 
 /// pdf of [`bilinear`] per unit area: 4·bilerp(x, y) / Σw on [0, 1]², else 0 (also for NaN).
-/// Exactly 1 everywhere in the square for equal weights.
+/// Exactly 1 everywhere in the square for equal weights (and for inadmissible ones, as
+/// [`bilinear`] takes them). Positive in the square but where the density itself is below f32's
+/// normal range, at weights some 10³⁸ apart.
 #[inline(always)]
 pub fn bilinear_pdf<P: Point2<Lane = L>, L: Math>(p: P, w: [L; 4]) -> L {
-    bilinear_pdf_lanes(p.to_lanes(), w)
+    bilinear_pdf_lanes(p.to_lanes(), admissible(w))
 }
 
 #[inline(always)]
@@ -100,28 +125,31 @@ fn bilinear_pdf_lanes<L: Math>(p: V2<L>, w: [L; 4]) -> L {
 }
 
 /// Inverse of [`bilinear`]: each coordinate through [`linear_inverse`], y first. p is clamped
-/// to [0, 1]²; NaN gives NaN.
+/// to [0, 1]²; NaN gives the canonical NaN, as in [`bilinear`].
 #[inline(always)]
 pub fn bilinear_inverse<P: Point2<Lane = L>, L: Math>(p: P, w: [L; 4]) -> P {
+    P::from_lanes(bilinear_inverse_lanes(p.to_lanes(), admissible(w)).canon())
+}
+
+#[inline(always)]
+fn bilinear_inverse_lanes<L: Math>(p: V2<L>, w: [L; 4]) -> V2<L> {
     let [w00, w10, w01, w11] = w;
-    let p = clamp_u(p.to_lanes());
+    let p = clamp_u(p);
     let x = linear_inverse(p.x, lerp(p.y, w00, w01), lerp(p.y, w10, w11));
-    P::from_lanes(V2::new(x, linear_inverse(p.y, w00 + w10, w01 + w11)))
+    V2::new(x, linear_inverse(p.y, w00 + w10, w01 + w11))
 }
 
 /// The corner weights max(0.01, n·ω̂) for the unit directions `corners` where the square's
-/// corners land, and unit normal `n`. Equal weights (the plain spherical map) where `uniform`,
-/// and wherever a weight is not finite (a non-finite normal); NaN in n gives 0.01 at every
-/// corner, also the plain map.
+/// corners land and the receiver's normal `n` (unit: a longer one scales the cosines against the
+/// floor), made admissible. Equal weights (the plain spherical map) where `uniform`; NaN in n
+/// gives 0.01 at every corner, and a non-finite weight equal weights (1), also the plain map.
 #[inline(always)]
 fn cosine_weights<L: Math>(corners: [V3<L>; 4], n: V3<L>, uniform: L::Mask) -> [L; 4] {
     let floor = L::c(BILINEAR_MIN_WEIGHT as f64);
-    let w = corners.map(|d| {
+    admissible(corners.map(|d| {
         let c = n.dot(d);
-        L::select(c.gt(floor), c, floor)
-    });
-    let bad = uniform | !(w[0] + w[1] + w[2] + w[3]).is_finite();
-    w.map(|x| L::select(bad, floor, x))
+        L::select(c.gt(floor) & !uniform, c, floor)
+    }))
 }
 
 /// The sample of a spherical map `base` at the bilinear warp of u, with the composed pdf: the
@@ -210,7 +238,10 @@ impl<P: Point3<Lane = L>, L: Math> BilinearTriangle<P> {
     /// See [`bilinear_triangle_inverse`].
     #[inline]
     pub fn inverse(&self, w: P) -> P::Vec2 {
-        bilinear_inverse(self.base.inverse(w), self.w)
+        P::Vec2::from_lanes(bilinear_inverse_lanes(
+            self.base.inverse(w).to_lanes(),
+            self.w,
+        ))
     }
 }
 
@@ -309,7 +340,10 @@ impl<P: Point3<Lane = L>, L: Math> BilinearRectangle<P> {
     /// See [`bilinear_rectangle_inverse`].
     #[inline]
     pub fn inverse(&self, p: P) -> P::Vec2 {
-        bilinear_inverse(self.base.inverse(p), self.w)
+        P::Vec2::from_lanes(bilinear_inverse_lanes(
+            self.base.inverse(p).to_lanes(),
+            self.w,
+        ))
     }
 }
 
@@ -338,6 +372,10 @@ pub fn bilinear_rectangle<P: Point2<Lane = L>, L: Math>(
 /// pdf per steradian that [`bilinear_rectangle`] returns a point in direction `p` (any positive
 /// multiple of the point): the spherical rectangle's pdf times the bilinear density at its
 /// inverse of the point of the light in that direction; 0 where the spherical pdf is 0.
+///
+/// It is a function of the direction: a point is taken as its direction, and met again on the
+/// plane, so for a light seen at a grazing angle (plane distance d, the point at |p|) its u′
+/// moves by about ε·|p|/d of the light's size, and the pdf by that times the density's slope.
 #[inline]
 pub fn bilinear_rectangle_pdf<P: Point3<Lane = L>, L: Math>(
     p: P,

@@ -67,6 +67,38 @@ fn linear_is_the_root_of_its_cdf_and_inverts_it() {
 }
 
 #[test]
+fn weights_count_by_their_ratios_and_bad_ones_as_equal() {
+    let w = [0.01, 1.0, 0.3, 3.0];
+    let scaled = |k: f32| w.map(|x| x * k);
+    let mut us: Vec<Vec2> = grid(16).into_iter().map(Vec2::from).collect();
+    us.extend(border().into_iter().map(Vec2::from));
+    for &u in &us {
+        let (x, p) = (warp::bilinear(u, w), warp::bilinear_pdf(u, w));
+        // Scaled by powers of two, as far as f32 reaches: bit for bit.
+        for k in [2f32.powi(100), 2f32.powi(-100), 2f32.powi(-120)] {
+            assert_eq!(warp::bilinear(u, scaled(k)), x, "u = {u}, scale {k:e}");
+            assert_eq!(warp::bilinear_pdf(u, scaled(k)), p, "u = {u}, scale {k:e}");
+        }
+        for bad in [
+            [0.0, 1.0, 1.0, 1.0],
+            [-1.0, 1.0, 1.0, 1.0],
+            [f32::NAN, 1.0, 1.0, 1.0],
+            [1.0, f32::INFINITY, 1.0, 1.0],
+        ] {
+            assert_eq!(warp::bilinear(u, bad), u, "{bad:?}");
+            assert_eq!(warp::bilinear_pdf(u, bad), 1.0, "{bad:?}");
+            assert_eq!(warp::bilinear_inverse(u, bad), u, "{bad:?}");
+        }
+        // A weight 1e-30 of the others, whose square underflows: finite, in the square.
+        let x = warp::bilinear(u, [1e-30, 1.0, 1.0, 1.0]);
+        assert!(
+            x.is_finite() && x.cmpge(Vec2::ZERO).all() && x.cmple(Vec2::ONE).all(),
+            "{u}: {x}"
+        );
+    }
+}
+
+#[test]
 fn equal_weights_are_the_identity_and_no_normal_the_plain_sampler() {
     let mut us: Vec<Vec2> = grid(64).into_iter().map(Vec2::from).collect();
     us.extend(border().into_iter().map(Vec2::from));
@@ -85,7 +117,8 @@ fn equal_weights_are_the_identity_and_no_normal_the_plain_sampler() {
     for n in [Vec3::ZERO, Vec3::NAN, Vec3::new(f32::INFINITY, 0.0, 1.0)] {
         let bt = BilinearTriangle::new(a, b, c, n);
         let br = BilinearRectangle::new(c0, ex, ey, n);
-        assert_eq!(bt.weights(), [0.01; 4], "n = {n}");
+        let w = bt.weights();
+        assert!(w.iter().all(|&x| x == w[0]), "n = {n}: weights {w:?}");
         for &u in &us {
             let (w, p) = tri.sample(u);
             assert_eq!(bt.sample(u), (w, p), "n = {n}, u = {u}");

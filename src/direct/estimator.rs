@@ -28,6 +28,8 @@ pub(super) struct Estimator<'a, 's, V: Point3, B, S, F> {
     pub(super) n_light: u32,
     pub(super) n_bsdf: u32,
     pub(super) tau: V::Lane,
+    /// How the lights are prepared to sample (for the frame's normal).
+    pub(super) sampling: scene::LightSampling,
     pub(super) samples: &'s mut S,
     pub(super) visibility: &'s mut F,
     pub(super) cache: Cache<V>,
@@ -79,6 +81,7 @@ where
             n_bsdf,
             // τ ≤ 0 or NaN: no roulette.
             tau: L::select(tau.gt(L::ZERO), tau, L::ZERO),
+            sampling: config.light_sampling,
             samples,
             visibility,
             cache: [None; PREPARED_LIGHTS],
@@ -98,7 +101,8 @@ where
         // Out of range (never asked): a light that is on no direction.
         let dark = Light::from(scene::SphereLight::new(Vec3::ZERO, 0.0, Vec3::ZERO));
         let light = self.lights.lights().get(j).copied().unwrap_or(dark);
-        let prepare = || light.splat::<V>().at(p);
+        let n = V::from_lanes(self.frame.n);
+        let prepare = || light.splat::<V>().at_sampling(p, n, self.sampling);
         match self.cache.get_mut(j) {
             Some(slot) => slot.get_or_insert_with(prepare),
             None => self.spare.insert(prepare()),

@@ -8,7 +8,7 @@ use crate::lane::{F32x8, F32x16, Lane, Lane32, Lanes, U32x8, U32x16};
 use crate::math::Math;
 use crate::mis::Candidate;
 use crate::point::Point3;
-use crate::scene::{Light, LightChoice, PowerTable};
+use crate::scene::{Light, LightChoice, LightSampling, PowerTable};
 use crate::x8::Vec3x8;
 use crate::x16::Vec3x16;
 
@@ -90,6 +90,9 @@ pub struct Config {
     /// The roulette threshold τ on a shadow ray's contribution (luminance); 0 (or NaN, or
     /// negative) traces every ray.
     pub roulette: f32,
+    /// How every strategy that samples a light samples it: by solid angle (the default), or
+    /// through the bilinear cosine warp for the shading normal ([`LightSampling`]).
+    pub light_sampling: LightSampling,
 }
 
 impl Config {
@@ -99,6 +102,15 @@ impl Config {
             n_light,
             n_bsdf,
             roulette: 0.0,
+            light_sampling: LightSampling::SolidAngle,
+        }
+    }
+
+    /// The same counts, the lights sampled by `sampling`.
+    pub const fn with_light_sampling(self, sampling: LightSampling) -> Self {
+        Self {
+            light_sampling: sampling,
+            ..self
         }
     }
 

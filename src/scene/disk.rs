@@ -6,7 +6,7 @@ use glam::Vec3;
 
 use super::emitter::Emitter;
 use super::select::{splat_lane, splat_vec};
-use super::shape::{AreaPoint, PreparedShape, Shape, ShapeSample, on_shape};
+use super::shape::{AreaPoint, LightSampling, PreparedShape, Shape, ShapeSample, on_shape};
 use crate::frame::Frame;
 use crate::lane::{Lane, V2, V3};
 use crate::math::Math;
@@ -87,7 +87,7 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Disk<V> {
     type Prepared = PreparedDisk<V>;
 
     #[inline]
-    fn at(&self, p: V, _n: V) -> PreparedDisk<V> {
+    fn at(&self, p: V, _n: V, _sampling: LightSampling) -> PreparedDisk<V> {
         let d = self.center.to_lanes() - p.to_lanes();
         let n = self.normal.to_lanes().normalize();
         let r = self.radius;

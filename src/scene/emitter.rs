@@ -7,7 +7,7 @@ use core::f64::consts::PI;
 use glam::Vec3;
 
 use super::luminance;
-use super::shape::{PreparedShape, Shape};
+use super::shape::{LightSampling, PreparedShape, Shape};
 use crate::lane::V3;
 use crate::math::Math;
 use crate::point::Point3;
@@ -67,11 +67,25 @@ impl<S: Shape<V>, V: Point3<Lane = L>, L: Math> Emitter<S, V> {
         self.at_normal(p, V::from_lanes(V3::all(L::ZERO)))
     }
 
-    /// The light prepared at shading point `p` with shading normal `n` (zero for none).
+    /// The light prepared at shading point `p` with shading normal `n` (zero for none), sampled
+    /// by solid angle.
     #[inline]
     pub fn at_normal(&self, p: V, n: V) -> PreparedEmitter<S::Prepared, V> {
+        self.at_sampling(p, n, LightSampling::SolidAngle)
+    }
+
+    /// The light prepared at shading point `p` for a receiver with unit shading normal `n`
+    /// (zero for none), sampled by `sampling` where its shape offers that mode, by solid angle
+    /// otherwise ([`LightSampling`]).
+    #[inline]
+    pub fn at_sampling(
+        &self,
+        p: V,
+        n: V,
+        sampling: LightSampling,
+    ) -> PreparedEmitter<S::Prepared, V> {
         PreparedEmitter {
-            shape: self.shape.at(p, n),
+            shape: self.shape.at(p, n, sampling),
             le: self.le.to_lanes(),
         }
     }

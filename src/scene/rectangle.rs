@@ -5,21 +5,27 @@ use glam::Vec3;
 
 use super::emitter::Emitter;
 use super::select::splat_vec;
-use super::shape::{AreaPoint, PreparedShape, Shape, ShapeSample, on_shape, planar_point, warped};
+use super::shape::{
+    AreaPoint, LightSampling, PreparedShape, Shape, ShapeSample, on_shape, planar_point, warped,
+};
 use crate::lane::V3;
 use crate::math::Math;
 use crate::point::{Point2, Point3};
-use crate::warp::{SphericalRectangle, plane_dot, wide_cross};
+use crate::warp::{BilinearRectangle, plane_dot, wide_cross};
 
 /// A parallelogram `corner + s·ex + t·ey`, s, t ∈ [0, 1], facing the side of its normal ex × ey.
 /// As a light ([`RectangleLight`](super::RectangleLight)) it emits on that side.
 ///
-/// A rectangle (ex ⟂ ey) is sampled uniformly in solid angle ([`SphericalRectangle`], Ureña,
+/// A rectangle (ex ⟂ ey) is sampled uniformly in solid angle
+/// ([`SphericalRectangle`](crate::warp::SphericalRectangle), Ureña,
 /// Fajardo and King 2013), with the area fallback below
 /// [`SPHERICAL_RECTANGLE_MIN_SR`](crate::warp::SPHERICAL_RECTANGLE_MIN_SR). Ureña's map needs a
 /// rectangle: a parallelogram whose edges are further than 2e-6 from orthogonal is sampled by
 /// area, with its exact converted pdf (or split it into two [`Triangle`](super::Triangle)s,
 /// which are sampled in solid angle).
+///
+/// Prepared for [`LightSampling::Bilinear`] with a shading normal, it samples through the
+/// bilinear cosine warp ([`BilinearRectangle`]), the area fallback included.
 ///
 /// A shading point closer to the plane than 1e-6 of its distance to the nearest corner, zero
 /// edges and non-finite input give pdf 0.
@@ -62,7 +68,9 @@ impl Rectangle<Vec3> {
 /// A [`Rectangle`] prepared at one shading point.
 #[derive(Clone, Copy)]
 pub struct PreparedRectangle<V: Point3 = Vec3> {
-    rect: SphericalRectangle<V3<V::Lane>>,
+    /// The spherical rectangle, behind the bilinear warp: with equal weights (solid angle)
+    /// unless prepared for [`LightSampling::Bilinear`] with a normal.
+    rect: BilinearRectangle<V3<V::Lane>>,
     /// The edges.
     ex: V3<V::Lane>,
     ey: V3<V::Lane>,
@@ -74,11 +82,15 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Rectangle<V> {
     type Prepared = PreparedRectangle<V>;
 
     #[inline]
-    fn at(&self, p: V, _n: V) -> PreparedRectangle<V> {
+    fn at(&self, p: V, n: V, sampling: LightSampling) -> PreparedRectangle<V> {
         let corner = self.corner.to_lanes() - p.to_lanes();
         let (ex, ey) = (self.ex.to_lanes(), self.ey.to_lanes());
+        let n = match sampling {
+            LightSampling::Bilinear => n.to_lanes(),
+            _ => V3::all(L::ZERO),
+        };
         PreparedRectangle {
-            rect: SphericalRectangle::new(corner, ex, ey),
+            rect: BilinearRectangle::new(corner, ex, ey, n),
             ex,
             ey,
             h: normal_dot(corner, ex, ey),

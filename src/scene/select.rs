@@ -5,7 +5,7 @@
 use glam::Vec3;
 
 use super::emitter::{Emitter, PreparedEmitter};
-use super::shape::{AreaPoint, PreparedShape, Shape, ShapeSample};
+use super::shape::{AreaPoint, LightSampling, PreparedShape, Shape, ShapeSample};
 use super::{
     Disk, PreparedDisk, PreparedRectangle, PreparedSphere, PreparedTriangle, Rectangle, Sphere,
     Triangle,
@@ -57,8 +57,8 @@ macro_rules! shapes {
         impl<V: Point3<Lane = L>, L: Math> Shape<V> for AnyShape<V> {
             type Prepared = AnyPrepared<V>;
             #[inline]
-            fn at(&self, p: V, n: V) -> AnyPrepared<V> {
-                match self { $(Self::$name(s) => AnyPrepared::$name(s.at(p, n)),)* }
+            fn at(&self, p: V, n: V, sampling: LightSampling) -> AnyPrepared<V> {
+                match self { $(Self::$name(s) => AnyPrepared::$name(s.at(p, n, sampling)),)* }
             }
             #[inline]
             fn sample_area(&self, u: V::Vec2) -> AreaPoint<V> {

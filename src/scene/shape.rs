@@ -7,6 +7,37 @@ use crate::lane::Lane;
 use crate::math::Math;
 use crate::point::Point3;
 
+/// How a prepared light samples its directions, for a receiver whose shading normal it knows.
+/// Every shape offers [`SolidAngle`](LightSampling::SolidAngle); a shape prepared with a mode it
+/// does not offer (or with the zero normal) samples by solid angle. The report's JSON names the
+/// modes `solid_angle` and `bilinear`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum LightSampling {
+    /// Uniform in the solid angle (the sphere's cone, the polygons' spherical maps; the disk and
+    /// the tiny polygons by area, converted).
+    #[default]
+    SolidAngle,
+    /// The triangle and the rectangle through the bilinear cosine warp
+    /// ([`warp::bilinear_triangle`](crate::warp::bilinear_triangle),
+    /// [`warp::bilinear_rectangle`](crate::warp::bilinear_rectangle)): approximately
+    /// proportional to the receiver's cosine. The sphere and the disk keep solid angle.
+    Bilinear,
+}
+
+impl LightSampling {
+    /// Every mode, in the order of the report.
+    pub const ALL: [LightSampling; 2] = [LightSampling::SolidAngle, LightSampling::Bilinear];
+
+    /// The name the report's JSON uses.
+    pub fn name(self) -> &'static str {
+        match self {
+            LightSampling::SolidAngle => "solid_angle",
+            LightSampling::Bilinear => "bilinear",
+        }
+    }
+}
+
 /// A direction towards a shape from a prepared point.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ShapeSample<V: Point3> {
@@ -37,8 +68,9 @@ pub trait Shape<V: Point3>: Copy {
     /// The shape prepared at one shading point.
     type Prepared: PreparedShape<V>;
     /// The shape prepared at shading point `p`, with the shading normal `n` (the zero vector for
-    /// none). Splitting takes several samples at one point and pays the set-up once.
-    fn at(&self, p: V, n: V) -> Self::Prepared;
+    /// none), to sample by `sampling` where the shape offers it and by its own sampler (solid
+    /// angle) otherwise. Splitting takes several samples at one point and pays the set-up once.
+    fn at(&self, p: V, n: V, sampling: LightSampling) -> Self::Prepared;
     /// A point uniform by area, its normal and the area pdf. u is clamped to [0, 1]²; NaN gives
     /// pdf 0.
     fn sample_area(&self, u: V::Vec2) -> AreaPoint<V>;

@@ -6,7 +6,7 @@ use glam::Vec3;
 
 use super::emitter::Emitter;
 use super::select::{splat_lane, splat_vec};
-use super::shape::{AreaPoint, PreparedShape, Shape, ShapeSample, on_shape};
+use super::shape::{AreaPoint, LightSampling, PreparedShape, Shape, ShapeSample, on_shape};
 use crate::frame::Frame;
 use crate::lane::{Lane, Mask, V2, V3};
 use crate::math::Math;
@@ -84,7 +84,7 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Sphere<V> {
     type Prepared = PreparedSphere<V>;
 
     #[inline]
-    fn at(&self, p: V, _n: V) -> PreparedSphere<V> {
+    fn at(&self, p: V, _n: V, _sampling: LightSampling) -> PreparedSphere<V> {
         let (c, p) = (self.center.to_lanes(), p.to_lanes());
         let r = self.radius;
         let d = c - p;

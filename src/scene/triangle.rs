@@ -6,24 +6,31 @@ use glam::Vec3;
 
 use super::emitter::Emitter;
 use super::select::splat_vec;
-use super::shape::{AreaPoint, PreparedShape, Shape, ShapeSample, on_shape, planar_point, warped};
+use super::shape::{
+    AreaPoint, LightSampling, PreparedShape, Shape, ShapeSample, on_shape, planar_point, warped,
+};
 use crate::lane::V3;
 use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::warp::plane_dot;
-use crate::warp::{SphericalTriangle, uniform_triangle, wide_cross};
+use crate::warp::{BilinearTriangle, uniform_triangle, wide_cross};
 
 /// A triangle with vertices `v`, facing the side of its normal (b − a) × (c − a): the side from
 /// which the vertices run counter-clockwise. As a light
 /// ([`TriangleLight`](super::TriangleLight)) it emits on that side.
 ///
-/// It samples the triangle's solid angle uniformly ([`SphericalTriangle`], Arvo 1995, with the
+/// It samples the triangle's solid angle uniformly
+/// ([`SphericalTriangle`](crate::warp::SphericalTriangle), Arvo 1995, with the
 /// plane and Van Oosterom–Strackee's solid angle in f64): pdf 1/Ω per steradian, within 2e-7 of
 /// the f64 value on random triangles near and far, grazing and straddling the horizon. Below
 /// [`SPHERICAL_TRIANGLE_MIN_SR`](crate::warp::SPHERICAL_TRIANGLE_MIN_SR) and above
 /// [`SPHERICAL_TRIANGLE_MAX_SR`](crate::warp::SPHERICAL_TRIANGLE_MAX_SR) it samples by area and
 /// returns the exact converted pdf. `pdf` and `hit` accept directions within the spherical
 /// triangle's slack (4.8e-7 + 7.6e-6·√Ω rad in f32) of the silhouette.
+///
+/// Prepared for [`LightSampling::Bilinear`] with a shading normal, it samples through the
+/// bilinear cosine warp ([`BilinearTriangle`]), whose pdf is the spherical one times the
+/// bilinear density at the direction's spherical inverse.
 ///
 /// Coincident or collinear vertices, a shading point closer to the plane than 1e-6 of its
 /// distance to the nearest vertex, and non-finite input give pdf 0.
@@ -60,7 +67,9 @@ impl Triangle<Vec3> {
 /// A [`Triangle`] prepared at one shading point.
 #[derive(Clone, Copy)]
 pub struct PreparedTriangle<V: Point3 = Vec3> {
-    tri: SphericalTriangle<V3<V::Lane>>,
+    /// The spherical triangle, behind the bilinear warp: with equal weights (solid angle) unless
+    /// prepared for [`LightSampling::Bilinear`] with a normal.
+    tri: BilinearTriangle<V3<V::Lane>>,
     /// The vertices relative to the shading point.
     v: [V3<V::Lane>; 3],
 }
@@ -69,11 +78,15 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Triangle<V> {
     type Prepared = PreparedTriangle<V>;
 
     #[inline]
-    fn at(&self, p: V, _n: V) -> PreparedTriangle<V> {
+    fn at(&self, p: V, n: V, sampling: LightSampling) -> PreparedTriangle<V> {
         let p = p.to_lanes();
         let v = self.v.map(|x| x.to_lanes() - p);
+        let n = match sampling {
+            LightSampling::Bilinear => n.to_lanes(),
+            _ => V3::all(L::ZERO),
+        };
         PreparedTriangle {
-            tri: SphericalTriangle::new(v[0], v[1], v[2]),
+            tri: BilinearTriangle::new(v[0], v[1], v[2], n),
             v,
         }
     }
@@ -109,7 +122,7 @@ impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedTriangle<V> {
     #[inline(always)]
     fn eval(&self, wi: V) -> (L, L) {
         let wi = wi.to_lanes();
-        let (h, _) = self.tri.plane();
+        let (h, _) = self.tri.spherical().plane();
         let [a, b, c] = self.v;
         let wn = plane_dot(
             [wi.x, wi.y, wi.z],
@@ -123,6 +136,6 @@ impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedTriangle<V> {
     /// The shading point is on the side of the normal.
     #[inline(always)]
     fn front(&self) -> L::Mask {
-        self.tri.plane().0.lt(L::ZERO)
+        self.tri.spherical().plane().0.lt(L::ZERO)
     }
 }

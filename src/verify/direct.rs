@@ -27,6 +27,7 @@ use crate::lane::{F32x8, Lane, V3};
 use crate::point::Point3;
 use crate::scene::{
     Bsdf, BsdfSample, DiskLight, Lambert, Light, Phong, PowerTable, RectangleLight, SphereLight,
+    TriangleLight,
 };
 use crate::seq::{Generator, Sequence};
 use crate::x8::{U32x8, Vec3x8};
@@ -148,7 +149,9 @@ fn sphere_at(theta: f64, d: f64, r: f64) -> SphereLight {
     SphereLight::new(c.as_vec3(), r as f32, Vec3::ONE)
 }
 
-/// The four scenes with closed-form references (Lambert, albedo 1: L = E/π).
+/// The scenes with closed-form references (Lambert, albedo 1: L = E/π): a sphere above and one
+/// straddling the horizon, a rectangle and a tilted triangle overhead, a disk on its axis, and
+/// the overlapping lights.
 pub fn analytic_scenes() -> Vec<DirectScene> {
     use core::f64::consts::PI;
     let (material, at) = lambert_point();
@@ -185,6 +188,14 @@ pub fn analytic_scenes() -> Vec<DirectScene> {
     ]
     .map(|v| [f64::from(v.x), f64::from(v.y), f64::from(v.z)]);
     let disk = DiskLight::new(Vec3::new(0.0, 0.0, 2.0), Vec3::NEG_Z, 1.5, Vec3::ONE);
+    // Tilted: the receiver's cosine is 0.32 to 0.78 across it.
+    let tri = [
+        Vec3::new(-1.5, -0.5, 1.0),
+        Vec3::new(0.5, 1.5, 2.0),
+        Vec3::new(1.5, -1.0, 0.6),
+    ];
+    let tri_light = TriangleLight::new(tri[0], tri[1], tri[2], Vec3::ONE);
+    let tri_vertices = tri.map(|v| [f64::from(v.x), f64::from(v.y), f64::from(v.z)]);
     std::vec![
         scene(
             "sphere_above",
@@ -200,6 +211,11 @@ pub fn analytic_scenes() -> Vec<DirectScene> {
             "rectangle",
             Light::from(rect),
             crate::reference::polygon_irradiance([0.0, 0.0, 1.0], &corners),
+        ),
+        scene(
+            "triangle",
+            Light::from(tri_light),
+            crate::reference::polygon_irradiance([0.0, 0.0, 1.0], &tri_vertices),
         ),
         scene(
             "disk_axis",

@@ -13,7 +13,7 @@ use core::fmt;
 
 use glam::Vec3;
 
-use crate::lane::{V2, V3};
+use crate::lane::{Lane, Mask, V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::warp::common::{clamp_u, clamp01};
@@ -152,6 +152,15 @@ fn cosine_weights<L: Math>(corners: [V3<L>; 4], n: V3<L>, uniform: L::Mask) -> [
     }))
 }
 
+/// True where the four weights are equal. There the bilinear warp is the identity and its
+/// density exactly 1, so the spherical map alone gives the same bits, and a packet whose lanes
+/// are all so skips the warp and the pdf's inverse (the branch follows the light and the
+/// receiver, not the sample).
+#[inline(always)]
+fn all_equal<L: Math>(w: [L; 4]) -> L::Mask {
+    w[0].eq(w[1]) & w[0].eq(w[2]) & w[0].eq(w[3])
+}
+
 /// The sample of a spherical map `base` at the bilinear warp of u, with the composed pdf: the
 /// base pdf times the bilinear density at the u′ it was given, kept only where the base kept the
 /// sample (its pdf > 0).
@@ -201,6 +210,8 @@ fn compose<L: Math>(p: L, v: V2<L>, w: [L; 4]) -> L {
 pub struct BilinearTriangle<P: Point3> {
     base: SphericalTriangle<P>,
     w: [P::Lane; 4],
+    /// True where the weights are equal: the plain map, whose pdf needs no inverse.
+    plain: <P::Lane as Lane>::Mask,
 }
 
 impl<P: Point3<Lane = L>, L: Math> BilinearTriangle<P> {
@@ -210,7 +221,17 @@ impl<P: Point3<Lane = L>, L: Math> BilinearTriangle<P> {
     pub fn new(a: P, b: P, c: P, n: P) -> Self {
         let base = SphericalTriangle::new(a, b, c);
         let w = cosine_weights(base.square_corners(), n.to_lanes(), base.by_area());
-        Self { base, w }
+        Self {
+            base,
+            w,
+            plain: all_equal(w),
+        }
+    }
+
+    /// The spherical triangle behind the warp.
+    #[inline]
+    pub fn spherical(&self) -> &SphericalTriangle<P> {
+        &self.base
     }
 
     /// The corner weights [w₀₀, w₁₀, w₀₁, w₁₁] of the bilinear warp.
@@ -222,6 +243,9 @@ impl<P: Point3<Lane = L>, L: Math> BilinearTriangle<P> {
     /// See [`bilinear_triangle`].
     #[inline]
     pub fn sample(&self, u: P::Vec2) -> (P, L) {
+        if self.plain.all() {
+            return self.base.sample(u);
+        }
         let (w, pdf) = sample_through(u.to_lanes(), self.w, |v| {
             let (w, p) = self.base.sample(P::Vec2::from_lanes(v));
             (w.to_lanes(), p)
@@ -232,6 +256,9 @@ impl<P: Point3<Lane = L>, L: Math> BilinearTriangle<P> {
     /// See [`bilinear_triangle_pdf`].
     #[inline]
     pub fn pdf(&self, w: P) -> L {
+        if self.plain.all() {
+            return self.base.pdf(w);
+        }
         compose(self.base.pdf(w), self.base.inverse(w).to_lanes(), self.w)
     }
 
@@ -297,6 +324,8 @@ pub fn bilinear_triangle_inverse<P: Point3<Lane = L>, L: Math>(
 pub struct BilinearRectangle<P: Point3> {
     base: SphericalRectangle<P>,
     w: [P::Lane; 4],
+    /// True where the weights are equal, as for the triangle.
+    plain: <P::Lane as Lane>::Mask,
 }
 
 impl<P: Point3<Lane = L>, L: Math> BilinearRectangle<P> {
@@ -306,7 +335,17 @@ impl<P: Point3<Lane = L>, L: Math> BilinearRectangle<P> {
     pub fn new(corner: P, ex: P, ey: P, n: P) -> Self {
         let base = SphericalRectangle::new(corner, ex, ey);
         let w = cosine_weights(base.square_corners(), n.to_lanes(), L::Mask::default());
-        Self { base, w }
+        Self {
+            base,
+            w,
+            plain: all_equal(w),
+        }
+    }
+
+    /// The spherical rectangle behind the warp.
+    #[inline]
+    pub fn spherical(&self) -> &SphericalRectangle<P> {
+        &self.base
     }
 
     /// The corner weights [w₀₀, w₁₀, w₀₁, w₁₁] of the bilinear warp.
@@ -318,6 +357,9 @@ impl<P: Point3<Lane = L>, L: Math> BilinearRectangle<P> {
     /// See [`bilinear_rectangle`].
     #[inline]
     pub fn sample(&self, u: P::Vec2) -> (P, L) {
+        if self.plain.all() {
+            return self.base.sample(u);
+        }
         let (p, pdf) = sample_through(u.to_lanes(), self.w, |v| {
             let (p, pdf) = self.base.sample(P::Vec2::from_lanes(v));
             (p.to_lanes(), pdf)
@@ -328,6 +370,9 @@ impl<P: Point3<Lane = L>, L: Math> BilinearRectangle<P> {
     /// See [`bilinear_rectangle_pdf`].
     #[inline]
     pub fn pdf(&self, p: P) -> L {
+        if self.plain.all() {
+            return self.base.pdf(p);
+        }
         // The inverse reads a point of the light; the pdf accepts any positive multiple.
         let on_plane = P::from_lanes(self.base.on_plane(p.to_lanes()));
         compose(

@@ -9,7 +9,8 @@
   sampling, it is within Veach's bound (Theorem 9.2: rel^2 <= better^2 + 1/min(n) - 1/sum(n)),
   and optimal MIS is at most 1.05 x power;
 - every sampler and sequence row carries its sixteen-wide time (x16_ns > 0), and every direct row
-  its x16 / x8 key.
+  its x16 / x8 key;
+- the direct rows cover both light-sampling modes, the bilinear one on at least three scenes.
 """
 import json
 import sys
@@ -28,6 +29,11 @@ for row in report["warps"] + report["sequences"]:
         failures.append(f"x16: {row['name']} has no sixteen-wide time")
 if any("x16_vs_x8" not in r for r in report["direct"]):
     failures.append("x16: a direct row has no x16_vs_x8 key")
+modes = {}
+for r in report["direct"]:
+    modes.setdefault(r.get("light_sampling"), set()).add(r["scene"])
+if set(modes) != {"solid_angle", "bilinear"} or len(modes.get("bilinear", ())) < 3:
+    failures.append(f"light sampling: scenes per mode {modes}")
 
 uniform = {"uniform_theta_phi", "uniform_hemisphere", "cosine_hemisphere"}
 unresolved = []
@@ -42,7 +48,7 @@ for r in report["direct"]:
 
 cells = {}
 for r in report["direct"]:
-    if r["scene"].startswith("grid_"):
+    if r["scene"].startswith("grid_") and r["light_sampling"] == "solid_angle":
         cells.setdefault(r["scene"], {})[r["strategy"]] = r
 if len(cells) != 16:
     failures.append(f"grid: {len(cells)} cells, expected 16")

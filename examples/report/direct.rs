@@ -1,16 +1,18 @@
 //! The direct-lighting table: every strategy of `mcsample::direct` on every scene of
-//! `verify::direct` (analytic, quadrature, the lecture's 4 × 4 MIS grid), at N = 64 + 64
+//! `verify::direct` (analytic, quadrature, the lecture's 4 × 4 MIS grid), in each light-sampling
+//! mode that changes the scene's lights, at N = 64 + 64
 //! samples per estimate with independent samples and unit visibility. Per row: the mean, its
 //! standard error and bias in σ, the relative RMSE of one estimate, the time per estimate (the
 //! x8 path per lane, and the scalar path), the x16 path's throughput over the x8 path's, the
 //! shadow rays, and the efficiency 1/(rel MSE × time) relative to the best single strategy of the
-//! scene.
+//! scene in any mode.
 
 use std::hint::black_box;
 use std::time::Instant;
 
 use glam::Vec3;
 use mcsample::direct::{self, Config as DirectConfig, ShadingPoint, Strategy};
+use mcsample::scene::{AnyShape, Light, LightSampling};
 use mcsample::seq::{Generator, Sequence};
 use mcsample::verify::direct::{
     DirectRun, DirectScene, analytic_scenes, grid_scenes, quadrature_scenes, run,
@@ -26,6 +28,8 @@ pub const N: u32 = 64;
 pub struct DirectRow {
     pub scene: String,
     pub strategy: &'static str,
+    /// How the strategy's light samples were drawn ([`LightSampling::name`]).
+    pub light_sampling: &'static str,
     pub reference: f64,
     pub run: DirectRun,
     /// x8 path, ns per estimate (per lane).
@@ -141,16 +145,30 @@ fn x16_vs_x8(scene: &DirectScene, strategy: Strategy, config: DirectConfig, coun
     med(&mut a) / med(&mut b)
 }
 
+/// The light-sampling modes that change `scene`: both for scenes with a triangle or rectangle
+/// light, solid angle alone for the others (the sphere and the disk have no other mode yet).
+fn modes(scene: &DirectScene) -> &'static [LightSampling] {
+    let polygon = |l: &Light| matches!(l.shape, AnyShape::Triangle(_) | AnyShape::Rectangle(_));
+    if scene.lights.iter().any(polygon) {
+        &LightSampling::ALL
+    } else {
+        &[LightSampling::SolidAngle]
+    }
+}
+
 pub fn direct(cfg: &Config) -> Vec<DirectRow> {
     let estimates: u64 = if cfg.quick { 1024 } else { 4096 };
-    let config = DirectConfig::new(N, N);
     let mut scenes = analytic_scenes();
     scenes.extend(quadrature_scenes());
     scenes.extend(grid_scenes());
     let mut rows = Vec::new();
     for (k, scene) in scenes.iter().enumerate() {
         let first = rows.len();
-        for strategy in Strategy::ALL {
+        let runs = modes(scene)
+            .iter()
+            .flat_map(|&m| Strategy::ALL.map(|s| (m, s)));
+        for (mode, strategy) in runs {
+            let config = DirectConfig::new(N, N).with_light_sampling(mode);
             let t = Instant::now();
             let r = run(
                 scene,
@@ -165,6 +183,7 @@ pub fn direct(cfg: &Config) -> Vec<DirectRow> {
             rows.push(DirectRow {
                 scene: scene.name.clone(),
                 strategy: strategy.name(),
+                light_sampling: mode.name(),
                 reference: scene.reference,
                 efficiency: 1.0 / (r.rel_rmse * r.rel_rmse * ns),
                 run: r,
@@ -176,9 +195,8 @@ pub fn direct(cfg: &Config) -> Vec<DirectRow> {
         }
         let best = rows[first..]
             .iter()
-            .zip(Strategy::ALL)
-            .filter(|(_, s)| SINGLE.contains(s))
-            .map(|(r, _)| r.efficiency)
+            .filter(|r| SINGLE.iter().any(|s| s.name() == r.strategy))
+            .map(|r| r.efficiency)
             .filter(|e| e.is_finite())
             .fold(0.0, f64::max);
         for r in &mut rows[first..] {

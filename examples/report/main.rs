@@ -608,9 +608,10 @@ fn main() {
                 direct_rows
                     .iter()
                     .map(|r| format!(
-                        "{{\"scene\": \"{}\", \"strategy\": \"{}\", \"reference\": {}, \"mean\": {}, \"stderr\": {}, \"bias_sigma\": {}, \"rel_rmse\": {}, \"ns_per_estimate\": {}, \"scalar_ns_per_estimate\": {}, \"x16_vs_x8\": {}, \"visibility_calls\": {}, \"efficiency\": {}, \"efficiency_vs_best_single\": {}, \"estimates\": {}, \"samples_per_estimate\": {}}}",
+                        "{{\"scene\": \"{}\", \"strategy\": \"{}\", \"light_sampling\": \"{}\", \"reference\": {}, \"mean\": {}, \"stderr\": {}, \"bias_sigma\": {}, \"rel_rmse\": {}, \"ns_per_estimate\": {}, \"scalar_ns_per_estimate\": {}, \"x16_vs_x8\": {}, \"visibility_calls\": {}, \"efficiency\": {}, \"efficiency_vs_best_single\": {}, \"estimates\": {}, \"samples_per_estimate\": {}}}",
                         esc(&r.scene),
                         r.strategy,
+                        r.light_sampling,
                         num(r.reference),
                         num(r.run.mean),
                         num(r.run.stderr),

@@ -289,18 +289,22 @@ pub fn direct(rows: &[DirectRow]) -> Table {
          eight-wide path's, medians of five alternating runs each (– for scenes with occluders); \
          rays: shadow rays per estimate; eff / best: efficiency \
          1/(MSE·time) over that of the best single strategy (uniform, light or BSDF sampling) \
-         of the scene.",
+         of the scene in any mode.\n\
+         lights: how every strategy that samples a light samples it (`LightSampling`): solid \
+         angle, or the bilinear cosine warp for the triangle and rectangle lights, whose scenes \
+         are run in both modes.",
         rows.first().map_or(0, |r| r.run.estimates)
     );
     let head = [
-        "scene", "strategy", "reference", "bias σ", "rel RMSE", "x8 ns", "scalar ns", "x16 / x8",
-        "rays", "eff / best",
+        "scene", "strategy", "lights", "reference", "bias σ", "rel RMSE", "x8 ns", "scalar ns",
+        "x16 / x8", "rays", "eff / best",
     ];
     let mut t = Table::new("Direct lighting", note, &head, 2);
     for r in rows {
         t.rows.push(vec![
             r.scene.clone(),
             r.strategy.to_string(),
+            r.light_sampling.to_string(),
             sig(r.reference, 6),
             r.bias_sigma().map_or("–".into(), |b| format!("{b:.2}")),
             sig(r.run.rel_rmse, 3),

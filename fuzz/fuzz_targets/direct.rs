@@ -1,6 +1,7 @@
 //! The direct-lighting estimator on arbitrary scenes: up to three lights of every kind with
 //! arbitrary geometry and radiance (or lined up behind one another, overlapping in direction), any shading point, normal and ωo, Lambert or Phong, every
-//! strategy, small sample counts, any roulette threshold and sequence seed. Invariants: no
+//! strategy in either light-sampling mode, small sample counts, any roulette threshold and
+//! sequence seed. Invariants: no
 //! panic; the radiance is finite, and ≥ 0 except for optimal MIS, whose weights can be negative
 //! (reflectances in [0, 1], radiance ≥ 0); it is 0 when
 //! n·ωo < 0; the shadow rays are within the strategy's budget; and the packet forms (the same
@@ -13,7 +14,9 @@ use glam::Vec3;
 use libfuzzer_sys::fuzz_target;
 use mcsample::direct::{self, Config, Lights, ShadingPoint, Strategy};
 use mcsample::seq::{Generator, Sequence};
-use mcsample::scene::{DiskLight, Lambert, Light, Phong, RectangleLight, SphereLight, TriangleLight};
+use mcsample::scene::{
+    DiskLight, Lambert, Light, LightSampling, Phong, RectangleLight, SphereLight, TriangleLight,
+};
 use mcsample::verify::direct::Material;
 use mcsample::x8::{F32x8, U32x8, Vec3x8};
 use mcsample::x16::{F32x16, U32x16, Vec3x16};
@@ -59,7 +62,11 @@ fuzz_target!(|data: &[u8]| {
     };
     let strategy = Strategy::ALL[byte(2) as usize % Strategy::ALL.len()];
     // Up to 11 of each, so that optimal MIS's cross-fitted path (8 and more) is reached.
-    let config = Config::new(u32::from(byte(3) % 12), u32::from(byte(4) % 12)).with_roulette(f[27]);
+    // Either light-sampling mode, from the top bit of the strategy's byte.
+    let sampling = LightSampling::ALL[usize::from(byte(2) >> 7)];
+    let config = Config::new(u32::from(byte(3) % 12), u32::from(byte(4) % 12))
+        .with_roulette(f[27])
+        .with_light_sampling(sampling);
     let seed = u32::from(byte(5));
     let lights_sel = Lights::uniform(&lights);
 

@@ -318,7 +318,9 @@ pub fn bilinear_triangle_inverse<P: Point3<Lane = L>, L: Math>(
 /// A rectangle set up for cosine-weighted sampling at one shading point: [`SphericalRectangle`]
 /// behind the bilinear warp, with weights max(0.01, n·ω̂) at its corners (u = (0, 0) is
 /// `corner`, (1, 0) corner + ex, (0, 1) corner + ey). The area fallback maps the square's corners
-/// to the same corners, so it is weighted too. [`bilinear_rectangle`], [`bilinear_rectangle_pdf`]
+/// to the same corners, so it is weighted too. A rectangle larger than
+/// [`SPHERICAL_RECTANGLE_INVERSE_REACH`](crate::warp::SPHERICAL_RECTANGLE_INVERSE_REACH) times
+/// its distance, whose spherical inverse is NaN, has equal weights: the plain sampler. [`bilinear_rectangle`], [`bilinear_rectangle_pdf`]
 /// and [`bilinear_rectangle_inverse`] are this type, built and used once.
 #[derive(Clone, Copy)]
 pub struct BilinearRectangle<P: Point3> {
@@ -334,7 +336,8 @@ impl<P: Point3<Lane = L>, L: Math> BilinearRectangle<P> {
     #[inline(always)]
     pub fn new(corner: P, ex: P, ey: P, n: P) -> Self {
         let base = SphericalRectangle::new(corner, ex, ey);
-        let w = cosine_weights(base.square_corners(), n.to_lanes(), L::Mask::default());
+        // Beyond the inverse's reach the pdf could not find u′: equal weights there.
+        let w = cosine_weights(base.square_corners(), n.to_lanes(), base.beyond_reach());
         Self {
             base,
             w,

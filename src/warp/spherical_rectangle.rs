@@ -635,6 +635,13 @@ impl<P: Point3<Lane = L>, L: Math> SphericalRectangle<P> {
         [s.corner, c1, s.corner + s.ey, c1 + s.ey].map(|p| p.normalize())
     }
 
+    /// True where the spherical inverse is NaN: the rectangle is larger than
+    /// [`SPHERICAL_RECTANGLE_INVERSE_REACH`] times its distance.
+    #[inline(always)]
+    pub(crate) fn beyond_reach(&self) -> L::Mask {
+        self.s.beyond_reach
+    }
+
     /// The point of the rectangle's plane in direction `w` (any positive multiple of a point):
     /// w·|f|²/(w·f), f the foot of the perpendicular, at the given scale.
     #[inline(always)]

@@ -126,6 +126,22 @@ fn equal_weights_are_the_identity_and_no_normal_the_plain_sampler() {
             assert_eq!(br.sample(u), rect.sample(u), "n = {n}, u = {u}");
         }
     }
+    // A rectangle beyond the spherical inverse's reach (4e7 times its distance), whose pdf could
+    // not find u′: equal weights, the plain sampler, so that its samples keep their pdf.
+    let (c0, ex, ey) = (
+        Vec3::new(-0.5, -0.5, 1.0),
+        Vec3::new(2e7, 0.0, 0.0),
+        Vec3::new(0.0, 2e7, 0.0),
+    );
+    let huge = BilinearRectangle::new(c0, ex, ey, TILTED);
+    let w = huge.weights();
+    assert!(w.iter().all(|&x| x == w[0]), "beyond reach: weights {w:?}");
+    let (x, p) = huge.sample(Vec2::new(0.3, 0.6));
+    assert!(
+        p > 0.0 && huge.pdf(x) > 0.0,
+        "beyond reach: {x} pdf {p}, pdf(x) {}",
+        huge.pdf(x)
+    );
     // The control: a normal makes them differ.
     let bt = BilinearTriangle::new(a, b, c, TILTED);
     assert_ne!(

@@ -187,12 +187,15 @@ where
     }
 
     /// Σⱼ over the lights along world direction `wi`: weight(pmfⱼ·pdfⱼ)·fcos·Leⱼ behind a shadow
-    /// ray each, with roulette from `ru`.
+    /// ray each, with roulette from `ru`. Where `weight` does not read the light's density
+    /// (`reads_pdf` false), each light gives only its distance, which a light sampled through
+    /// the bilinear warp finds without the spherical inverse its pdf needs.
     pub(super) fn along(
         &mut self,
         wi: V3<L>,
         fcos: V3<L>,
         ru: L,
+        reads_pdf: bool,
         weight: impl Fn(L) -> L,
     ) -> V3<L> {
         let mut sum = V3::all(L::ZERO);
@@ -203,7 +206,11 @@ where
         for j in 0..self.lights.lights().len() {
             let pmf = L::c(f64::from(self.lights.pmf(j)));
             let l = self.prepared(j);
-            let (pdf, t) = l.pdf_hit(wv);
+            let (pdf, t) = if reads_pdf {
+                l.pdf_hit(wv)
+            } else {
+                (L::ZERO, l.hit(wv))
+            };
             let on = t.is_finite();
             if !on.any() {
                 continue;

@@ -42,7 +42,7 @@ where
             };
             let ok = inv_pdf.is_finite() & inv_pdf.gt(L::ZERO);
             let fcos = V3::select(ok, fcos.scale(inv_pdf), V3::all(L::ZERO));
-            sum = sum + self.along(wi, fcos, ru, |_| L::ONE);
+            sum = sum + self.along(wi, fcos, ru, false, |_| L::ONE);
         }
         sum.scale(L::ONE / L::c(f64::from(n.max(1))))
     }
@@ -114,7 +114,7 @@ where
         for s in self.n_light..self.n_light + self.n_bsdf {
             let (wi, fcos, pb) = self.bsdf_sample(s);
             let ru = self.u(s, 1).y;
-            bsdf = bsdf + self.along(wi, fcos, ru, |pl| w(nb, nl, pb, pl) / pb);
+            bsdf = bsdf + self.along(wi, fcos, ru, true, |pl| w(nb, nl, pb, pl) / pb);
         }
         per_count(light, self.n_light) + per_count(bsdf, self.n_bsdf)
     }
@@ -152,7 +152,7 @@ where
             if (!use_light).any() {
                 let (wi, fcos, pb) = self.bsdf_sample_with(u);
                 let fcos = V3::select(!use_light, fcos, V3::all(L::ZERO));
-                c = c + self.along(wi, fcos, v.y, |pl| L::ONE / cl.mul_add(pl, cb * pb));
+                c = c + self.along(wi, fcos, v.y, true, |pl| L::ONE / cl.mul_add(pl, cb * pb));
             }
             sum = sum + c;
         }
@@ -240,7 +240,7 @@ where
             let fcos = V3::select(kept_sample, self.fcos(x.wi), V3::all(L::ZERO));
             // Roulette by the balance-weighted contribution; the accumulator takes F itself.
             let w = mis::balance(cl, pl, cb, pb);
-            let kept = self.along(x.wi, fcos, ru, |_| w / pl);
+            let kept = self.along(x.wi, fcos, ru, false, |_| w / pl);
             let f = V3::select(w.gt(L::ZERO), scale_div(kept, w / pl), V3::all(L::ZERO));
             push(if second(s) { &mut acc1 } else { &mut acc0 }, f, pl, pb);
         }
@@ -250,7 +250,7 @@ where
             let ru = self.u(s, 1).y;
             let pl = self.mixture_pdf(wi);
             let w = mis::balance(cb, pb, cl, pl);
-            let kept = self.along(wi, fcos, ru, |_| w / pb);
+            let kept = self.along(wi, fcos, ru, false, |_| w / pb);
             let f = V3::select(w.gt(L::ZERO), scale_div(kept, w / pb), V3::all(L::ZERO));
             push(if second(j) { &mut acc1 } else { &mut acc0 }, f, pl, pb);
         }

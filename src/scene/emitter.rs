@@ -160,7 +160,7 @@ impl<P: PreparedShape<V>, V: Point3<Lane = L>, L: Math> PreparedEmitter<P, V> {
     /// `pdf`.
     #[inline]
     pub fn hit(&self, wi: V) -> L {
-        self.shape.eval(wi).1
+        self.shape.dist(wi)
     }
 
     /// `pdf` and `hit` at `wi` from one evaluation, as a BSDF sample's MIS weight and its shadow

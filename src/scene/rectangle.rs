@@ -129,11 +129,20 @@ impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedRectangle<V> {
         warped(wi, kept, self.eval(V::from_lanes(wi)))
     }
 
-    /// The spherical rectangle's pdf of unit `wi` and the distance h/(wi·n) to the plane.
+    /// The spherical rectangle's pdf of unit `wi` (through the bilinear warp where prepared so)
+    /// and the distance h/(wi·n) to the plane.
     #[inline(always)]
     fn eval(&self, wi: V) -> (L, L) {
         let wi = wi.to_lanes();
         on_shape(self.rect.pdf(wi), self.h / normal_dot(wi, self.ex, self.ey))
+    }
+
+    /// The distance of `eval`, decided by the spherical pdf alone, as the triangle's.
+    #[inline(always)]
+    fn dist(&self, wi: V) -> L {
+        let wi = wi.to_lanes();
+        let pdf = self.rect.spherical().pdf(wi);
+        on_shape(pdf, self.h / normal_dot(wi, self.ex, self.ey)).1
     }
 
     /// The shading point is on the side of the normal.

@@ -80,6 +80,10 @@ macro_rules! shapes {
                 match self { $(Self::$name(s) => s.eval(wi),)* }
             }
             #[inline]
+            fn dist(&self, wi: V) -> L {
+                match self { $(Self::$name(s) => s.dist(wi),)* }
+            }
+            #[inline]
             fn front(&self) -> L::Mask {
                 match self { $(Self::$name(s) => s.front(),)* }
             }

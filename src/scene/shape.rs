@@ -88,6 +88,13 @@ pub trait PreparedShape<V: Point3>: Copy {
     /// and the distance to the shape along it: (pdf, t) with pdf > 0 exactly where t < ∞, from
     /// one test of whether `wi` is on the shape, so the two never disagree.
     fn eval(&self, wi: V) -> (V::Lane, V::Lane);
+    /// [`eval`](Self::eval)'s distance alone, bit for bit, for a caller that needs no pdf: a
+    /// shape whose pdf costs more than its inside test (a polygon through the bilinear warp)
+    /// skips the rest.
+    #[inline(always)]
+    fn dist(&self, wi: V) -> V::Lane {
+        self.eval(wi).1
+    }
     /// Where the shading point is on the side the shape faces (outside a sphere, on the side of
     /// a planar shape's normal): the side a one-sided emitter lights.
     fn front(&self) -> <V::Lane as Lane>::Mask;

@@ -110,18 +110,10 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Triangle<V> {
     }
 }
 
-impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedTriangle<V> {
-    #[inline]
-    fn sample(&self, u: V::Vec2) -> ShapeSample<V> {
-        let (wi, kept) = self.tri.sample(u.to_lanes());
-        warped(wi, kept, self.eval(V::from_lanes(wi)))
-    }
-
-    /// The spherical triangle's pdf of unit `wi` and the distance h/(wi·n) to the plane (wi·n
-    /// in f64 from the vertices).
+impl<V: Point3<Lane = L>, L: Math> PreparedTriangle<V> {
+    /// The distance h/(wi·n) along unit `wi` to the plane.
     #[inline(always)]
-    fn eval(&self, wi: V) -> (L, L) {
-        let wi = wi.to_lanes();
+    fn plane_distance(&self, wi: V3<L>) -> L {
         let (h, _) = self.tri.spherical().plane();
         let [a, b, c] = self.v;
         let wn = plane_dot(
@@ -130,7 +122,31 @@ impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedTriangle<V> {
             [b.x, b.y, b.z],
             [c.x, c.y, c.z],
         );
-        on_shape(self.tri.pdf(wi), h / wn)
+        h / wn
+    }
+}
+
+impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedTriangle<V> {
+    #[inline]
+    fn sample(&self, u: V::Vec2) -> ShapeSample<V> {
+        let (wi, kept) = self.tri.sample(u.to_lanes());
+        warped(wi, kept, self.eval(V::from_lanes(wi)))
+    }
+
+    /// The spherical triangle's pdf of unit `wi` (through the bilinear warp where prepared so)
+    /// and the distance h/(wi·n) to the plane (wi·n in f64 from the vertices).
+    #[inline(always)]
+    fn eval(&self, wi: V) -> (L, L) {
+        let wi = wi.to_lanes();
+        on_shape(self.tri.pdf(wi), self.plane_distance(wi))
+    }
+
+    /// The distance of `eval`, decided by the spherical pdf alone: the bilinear density is
+    /// positive wherever the spherical one is, so the verdict is the same.
+    #[inline(always)]
+    fn dist(&self, wi: V) -> L {
+        let wi = wi.to_lanes();
+        on_shape(self.tri.spherical().pdf(wi), self.plane_distance(wi)).1
     }
 
     /// The shading point is on the side of the normal.

@@ -176,10 +176,17 @@ fn sample_through<L: Math>(
 }
 
 /// The base pdf `p` times the bilinear density at `v`, or 0 where `p` is 0 (`v` may be NaN
-/// there).
+/// there). Where `p` is positive the result is too: the density is at least 4·min w/Σw in the
+/// square, and where the inverse failed (NaN `v`) it counts as 1, so that the pdf is positive
+/// exactly where the spherical one is.
 #[inline(always)]
 fn compose<L: Math>(p: L, v: V2<L>, w: [L; 4]) -> L {
-    L::select(p.gt(L::ZERO), p * bilinear_pdf_lanes(v, w), L::ZERO)
+    let d = bilinear_pdf_lanes(v, w);
+    L::select(
+        p.gt(L::ZERO),
+        p * L::select(d.gt(L::ZERO), d, L::ONE),
+        L::ZERO,
+    )
 }
 
 /// A triangle set up for cosine-weighted sampling at one shading point: [`SphericalTriangle`]

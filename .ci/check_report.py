@@ -8,7 +8,8 @@
 - on the lecture's grid, in every cell: power MIS is never above the worse of light and BSDF
   sampling, it is within Veach's bound (Theorem 9.2: rel^2 <= better^2 + 1/min(n) - 1/sum(n)),
   and optimal MIS is at most 1.05 x power;
-- every sampler and sequence row carries its sixteen-wide time (x16_ns > 0), and every direct row
+- every sampler, sequence and MIS-weight row carries its sixteen-wide time (x16_ns > 0), and
+  every direct row
   its x16 / x8 key;
 - the direct rows cover both light-sampling modes, the bilinear one on at least three scenes.
 """
@@ -24,7 +25,7 @@ for w in warps:
     if not w["chi2_p"] > level:
         failures.append(f"chi2: {w['name']} p = {w['chi2_p']} <= {level:.2e}")
 
-for row in report["warps"] + report["sequences"]:
+for row in report["warps"] + report["sequences"] + report["mis_weights"]:
     if not (row.get("x16_ns") or 0) > 0:
         failures.append(f"x16: {row['name']} has no sixteen-wide time")
 if any("x16_vs_x8" not in r for r in report["direct"]):

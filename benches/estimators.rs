@@ -42,7 +42,7 @@ fn weights(c: &mut Criterion) {
     let mut out8 = vec![F32x8::ZERO; N / 8];
     let mut g = c.benchmark_group("mis");
     g.throughput(Throughput::Elements(N as u64));
-    for (name, f, fx8) in HEURISTICS {
+    for (name, f, fx8, _) in HEURISTICS {
         g.bench_function(BenchmarkId::new("scalar", name), |b| {
             b.iter(|| {
                 for (o, x) in out.iter_mut().zip(black_box(&q)) {

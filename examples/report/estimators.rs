@@ -1,10 +1,10 @@
 //! The estimators table: on `verify::mis1d`'s problems, the variance of every MIS heuristic, of
 //! optimal MIS, one-sample MIS and RIS relative to the best single technique at equal sample
-//! counts; and the time per MIS weight, scalar and x8.
+//! counts; and the time per MIS weight, scalar, x8 and x16.
 
 use glam::Vec4;
-use mcsample::lane::F32x8;
-use mcsample::verify::mis1d::{self, ESTIMATORS, HEURISTICS, INTEGRANDS};
+use mcsample::lane::{F32x8, F32x16};
+use mcsample::verify::mis1d::{self, ESTIMATORS, HEURISTICS, HeuristicX8, INTEGRANDS};
 
 use crate::{Config, time_pair};
 
@@ -19,6 +19,10 @@ pub struct WeightRow {
     pub name: &'static str,
     pub scalar_ns: f64,
     pub x8_ns: f64,
+    /// ns per weight of the 16-wide form, and its throughput over the 8-wide form's, from their
+    /// own interleaved pair.
+    pub x16_ns: f64,
+    pub x16_vs_x8: f64,
 }
 
 /// Samples per technique in one estimate.
@@ -61,9 +65,20 @@ pub fn weight_times(cfg: &Config) -> Vec<WeightRow> {
         .chunks_exact(8)
         .map(|c| core::array::from_fn(|k| F32x8::new(core::array::from_fn(|i| c[i][k]))))
         .collect();
+    let packets16: Vec<[F32x16; 4]> = quads
+        .chunks_exact(16)
+        .map(|c| core::array::from_fn(|k| F32x16::new(core::array::from_fn(|i| c[i][k]))))
+        .collect();
+    let x8_loop = |fx8: HeuristicX8| {
+        move |p: &[[F32x8; 4]], out: &mut [F32x8]| {
+            for (o, p) in out.iter_mut().zip(p) {
+                *o = fx8(p[0], p[1], p[2], p[3]);
+            }
+        }
+    };
     HEURISTICS
         .iter()
-        .map(|&(name, f, fx8)| {
+        .map(|&(name, f, fx8, fx16)| {
             let (scalar_ns, x8_ns) = time_pair(
                 cfg,
                 &quads,
@@ -73,9 +88,17 @@ pub fn weight_times(cfg: &Config) -> Vec<WeightRow> {
                         *o = f(q.x, q.y, q.z, q.w);
                     }
                 },
-                &|p: &[[F32x8; 4]], out: &mut [F32x8]| {
+                &x8_loop(fx8),
+            );
+            // Per packet of eight in both loops, which cover the same weights.
+            let (x8_again, x16) = time_pair(
+                cfg,
+                &packets,
+                &packets16,
+                &x8_loop(fx8),
+                &|p: &[[F32x16; 4]], out: &mut [F32x16]| {
                     for (o, p) in out.iter_mut().zip(p) {
-                        *o = fx8(p[0], p[1], p[2], p[3]);
+                        *o = fx16(p[0], p[1], p[2], p[3]);
                     }
                 },
             );
@@ -83,6 +106,8 @@ pub fn weight_times(cfg: &Config) -> Vec<WeightRow> {
                 name,
                 scalar_ns,
                 x8_ns,
+                x16_ns: x16 / 8.0,
+                x16_vs_x8: x8_again / x16,
             }
         })
         .collect()

@@ -633,10 +633,12 @@ fn main() {
                 weights
                     .iter()
                     .map(|w| format!(
-                        "{{\"name\": \"{}\", \"scalar_ns\": {}, \"x8_ns\": {}}}",
+                        "{{\"name\": \"{}\", \"scalar_ns\": {}, \"x8_ns\": {}, \"x16_ns\": {}, \"x16_vs_x8\": {}}}",
                         w.name,
                         num(w.scalar_ns),
-                        num(w.x8_ns)
+                        num(w.x8_ns),
+                        num(w.x16_ns),
+                        num(w.x16_vs_x8)
                     ))
                     .collect(),
             ),

@@ -6,23 +6,26 @@
 use crate::estimate::MeanVar;
 use crate::mis::{self, FixedAlpha, OptimalMis, Reservoir};
 
-use crate::lane::F32x8;
+use crate::lane::{F32x8, F32x16};
 
 /// A two-technique heuristic: (n_f, pdf_f, n_g, pdf_g) → weight of f.
 pub type Heuristic = fn(f32, f32, f32, f32) -> f32;
-/// The same in the packet width.
+/// The same in the 8-wide packet.
 pub type HeuristicX8 = fn(F32x8, F32x8, F32x8, F32x8) -> F32x8;
+/// The same in the 16-wide packet.
+pub type HeuristicX16 = fn(F32x16, F32x16, F32x16, F32x16) -> F32x16;
 
-/// Every two-technique heuristic of [`mis`] in both widths, the cutoff at α = 0.1: what the
+/// Every two-technique heuristic of [`mis`] in every width, the cutoff at α = 0.1: what the
 /// report, the benches and the fuzz target iterate.
-pub const HEURISTICS: [(&str, Heuristic, HeuristicX8); 4] = [
-    ("balance", mis::balance, mis::balance),
-    ("power", mis::power, mis::power),
-    ("maximum", mis::maximum, mis::maximum),
+pub const HEURISTICS: [(&str, Heuristic, HeuristicX8, HeuristicX16); 4] = [
+    ("balance", mis::balance, mis::balance, mis::balance),
+    ("power", mis::power, mis::power, mis::power),
+    ("maximum", mis::maximum, mis::maximum, mis::maximum),
     (
         "cutoff",
         |a, b, c, d| mis::cutoff(a, b, c, d, 0.1),
         |a, b, c, d| mis::cutoff(a, b, c, d, F32x8::splat(0.1)),
+        |a, b, c, d| mis::cutoff(a, b, c, d, F32x16::splat(0.1)),
     ),
 ];
 
@@ -159,7 +162,7 @@ pub fn compare(integrand: &Integrand, n: usize, rounds: usize, seed: u64) -> [Me
             let (x, tech) = if j < n { (u, 0) } else { (x2, 1) };
             let (p1, p2) = (pdf1(x), pdf2(x));
             let (own, other) = if tech == 0 { (p1, p2) } else { (p2, p1) };
-            for (acc, (_, weight, _)) in h.iter_mut().zip(HEURISTICS) {
+            for (acc, (_, weight, _, _)) in h.iter_mut().zip(HEURISTICS) {
                 *acc += w32(weight, own, other) * f(x) / (nf * own);
             }
             direct.push(f(x), p1, p2);

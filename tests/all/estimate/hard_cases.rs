@@ -8,6 +8,7 @@ use mcsample::estimate::{self, MeanVar};
 use mcsample::mis;
 use mcsample::verify::mis1d::HEURISTICS;
 use mcsample::x8::F32x8;
+use mcsample::x16::F32x16;
 
 hard_case!(
     case_13_power_and_balance_in_ratio_form_at_extreme_pdfs,
@@ -23,11 +24,19 @@ hard_case!(
         ];
         let mut r = vec![];
         for (x, want) in cases {
-            // Every heuristic (balance and power, and maximum and cutoff too), both widths.
-            for (name, f, f8) in HEURISTICS {
+            // Every heuristic (balance and power, and maximum and cutoff too), every width.
+            for (name, f, f8, f16) in HEURISTICS {
                 let w = f(x[0], x[1], x[2], x[3]);
                 let [a, b, c, d] = x.map(F32x8::splat);
                 let w8 = f8(a, b, c, d);
+                let [a, b, c, d] = x.map(F32x16::splat);
+                r.push(check(
+                    f16(a, b, c, d)
+                        .to_array()
+                        .iter()
+                        .all(|l| l.to_bits() == w.to_bits()),
+                    || format!("{name}{x:?}: x16 packet against scalar {w}"),
+                ));
                 r.push(check(w == want, || {
                     format!("{name}{x:?} = {w}, want {want}")
                 }));

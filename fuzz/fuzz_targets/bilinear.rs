@@ -68,11 +68,8 @@ fn check_warp(u: Vec2, w: [f32; 4]) {
         );
     } else {
         assert!(in_unit_square(x), "{}", ctx());
-        // Positive but where the density is below f32's normal range (weights 1e38 apart).
-        let (lo, hi) = w
-            .iter()
-            .fold((f32::MAX, 0.0f32), |(l, h), &v| (l.min(v), h.max(v)));
-        assert!(pdf > 0.0 || !admissible || hi / lo > 1e30, "{}", ctx());
+        // Positive in the square: the weights' floor keeps the density above 2⁻⁴⁰.
+        assert!(pdf > 0.0 || !admissible, "{}", ctx());
         let u = u.clamp(Vec2::ZERO, Vec2::ONE);
         assert!(
             (back - u).abs().max_element() <= 1e-6,

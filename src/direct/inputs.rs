@@ -90,8 +90,9 @@ pub struct Config {
     /// The roulette threshold τ on a shadow ray's contribution (luminance); 0 (or NaN, or
     /// negative) traces every ray.
     pub roulette: f32,
-    /// How every strategy that samples a light samples it: by solid angle (the default), or
-    /// through the bilinear cosine warp for the shading normal ([`LightSampling`]).
+    /// How every strategy that samples a light by direction samples it (all but `light_area`,
+    /// which samples points by area): by solid angle (the default), or through the bilinear
+    /// cosine warp for the shading normal ([`LightSampling`]).
     pub light_sampling: LightSampling,
 }
 

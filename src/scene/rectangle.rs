@@ -24,8 +24,9 @@ use crate::warp::{BilinearRectangle, plane_dot, wide_cross};
 /// area, with its exact converted pdf (or split it into two [`Triangle`](super::Triangle)s,
 /// which are sampled in solid angle).
 ///
-/// Prepared for [`LightSampling::Bilinear`] with a shading normal, it samples through the
-/// bilinear cosine warp ([`BilinearRectangle`]), the area fallback included.
+/// Prepared for [`LightSampling::Bilinear`] with a shading normal, a rectangle sampled in solid
+/// angle samples through the bilinear cosine warp ([`BilinearRectangle`]); one sampled by area
+/// keeps area sampling.
 ///
 /// A shading point closer to the plane than 1e-6 of its distance to the nearest corner, zero
 /// edges and non-finite input give pdf 0.

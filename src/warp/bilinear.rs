@@ -37,7 +37,8 @@ fn lerp<L: Math>(t: L, a: L, b: L) -> L {
     L::select(a.eq(b), a, (L::ONE - t).mul_add(a, t * b))
 }
 
-/// [0, 1] → [0, 1] with density 2((1 − x)a + x·b)/(a + b), for weights a, b ≥ 0, not both 0: the
+/// [0, 1] → [0, 1] with density 2((1 − x)a + x·b)/(a + b), for weights a, b > 0 whose squares
+/// are normal f32 numbers (as [`bilinear`] makes them; a = 0 at u = 0 would be 0·∞): the
 /// root of the quadratic CDF, x = u(a + b) / (a + √(a² + u(b² − a²))), whose denominator is a
 /// sum of non-negative terms, so that nothing divides by a − b or cancels as a → b. With a = b
 /// the factor (a + b)/(a + √a²) is exactly 1, and x = u bit for bit.
@@ -108,8 +109,8 @@ fn bilinear_lanes<L: Math>(u: V2<L>, w: [L; 4]) -> V2<L> {
 
 /// pdf of [`bilinear`] per unit area: 4·bilerp(x, y) / Σw on [0, 1]², else 0 (also for NaN).
 /// Exactly 1 everywhere in the square for equal weights (and for inadmissible ones, as
-/// [`bilinear`] takes them). Positive in the square but where the density itself is below f32's
-/// normal range, at weights some 10³⁸ apart.
+/// [`bilinear`] takes them). Positive in the square: the weights' floor at 2⁻⁴⁰ of the largest
+/// keeps the density above 2⁻⁴⁰.
 #[inline(always)]
 pub fn bilinear_pdf<P: Point2<Lane = L>, L: Math>(p: P, w: [L; 4]) -> L {
     bilinear_pdf_lanes(p.to_lanes(), admissible(w))
@@ -324,10 +325,11 @@ pub fn bilinear_triangle_inverse<P: Point3<Lane = L>, L: Math>(
 
 /// A rectangle set up for cosine-weighted sampling at one shading point: [`SphericalRectangle`]
 /// behind the bilinear warp, with weights max(0.01, n·ω̂) at its corners (u = (0, 0) is
-/// `corner`, (1, 0) corner + ex, (0, 1) corner + ey). The area fallback maps the square's corners
-/// to the same corners, so it is weighted too. A rectangle larger than
+/// `corner`, (1, 0) corner + ex, (0, 1) corner + ey). Where it is sampled by area (tiny, or a
+/// skewed parallelogram), whose density in solid angle the corner cosines do not follow, and
+/// where it is larger than
 /// [`SPHERICAL_RECTANGLE_INVERSE_REACH`](crate::warp::SPHERICAL_RECTANGLE_INVERSE_REACH) times
-/// its distance, whose spherical inverse is NaN, has equal weights: the plain sampler. [`bilinear_rectangle`], [`bilinear_rectangle_pdf`]
+/// its distance, whose spherical inverse is NaN, the weights are equal: the plain sampler. [`bilinear_rectangle`], [`bilinear_rectangle_pdf`]
 /// and [`bilinear_rectangle_inverse`] are this type, built and used once.
 #[derive(Clone, Copy)]
 pub struct BilinearRectangle<P: Point3> {
@@ -343,8 +345,11 @@ impl<P: Point3<Lane = L>, L: Math> BilinearRectangle<P> {
     #[inline(always)]
     pub fn new(corner: P, ex: P, ey: P, n: P) -> Self {
         let base = SphericalRectangle::new(corner, ex, ey);
-        // Beyond the inverse's reach the pdf could not find u′: equal weights there.
-        let w = cosine_weights(base.square_corners(), n.to_lanes(), base.beyond_reach());
+        // Sampled by area, the density in solid angle carries d²/cos θ_l, which corner cosines
+        // alone do not follow (a skewed parallelogram's error grew 1.3×); beyond the inverse's
+        // reach the pdf could not find u′. Equal weights in both: the plain sampler.
+        let plain = base.by_area() | base.beyond_reach();
+        let w = cosine_weights(base.square_corners(), n.to_lanes(), plain);
         Self {
             base,
             w,

@@ -701,7 +701,16 @@ impl<P: Point3<Lane = L>, L: Math> SphericalRectangle<P> {
         let s = &self.s;
         let p = p.to_lanes().scale(s.scale);
         let d = p - s.corner;
-        let st = V2::new(d.dot(s.ex) / s.ex.dot(s.ex), d.dot(s.ey) / s.ey.dot(s.ey));
+        // By area: (s, t) of p − corner = s·ex + t·ey from the 2 × 2 Gram system, which holds for
+        // any parallelogram (the skewed ones are sampled by area); projecting on each edge
+        // alone would leak one coordinate into the other.
+        let (xx, xy, yy) = (s.ex.dot(s.ex), s.ex.dot(s.ey), s.ey.dot(s.ey));
+        let (dx, dy) = (d.dot(s.ex), d.dot(s.ey));
+        let det = xx.mul_add(yy, -(xy * xy));
+        let st = V2::new(
+            dx.mul_add(yy, -(dy * xy)) / det,
+            dy.mul_add(xx, -(dx * xy)) / det,
+        );
         // The oblique coordinates of p − foot, as in `setup`.
         let f = p - s.foot;
         let (xc, yc) = (f.dot(s.xh), f.dot(s.yh));

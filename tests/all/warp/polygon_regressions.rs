@@ -491,3 +491,31 @@ fn area_sampled_pdf_is_the_exact_density_of_the_direction_given() {
     // The grazing ones show why no bound holds for every plane.
     assert!(worst > 1e-3, "grazing: {worst:e}");
 }
+
+/// A parallelogram whose edges are far from orthogonal is sampled by area, and its inverse must
+/// return the (s, t) of corner + s·ex + t·ey: projected on each edge alone, the far corner
+/// corner + ey came back as (0.40, 1) instead of (0, 1) (found in review, through the bilinear
+/// rectangle, whose pdf reads the inverse).
+#[test]
+fn a_skewed_parallelograms_inverse_returns_its_coordinates() {
+    let (corner, ex, ey) = (
+        Vec3::new(-1.0, -0.5, 2.0),
+        Vec3::new(2.0, 0.0, 0.0),
+        Vec3::new(0.8, 1.0, 0.0),
+    );
+    let r = SphericalRectangle::new(corner, ex, ey);
+    assert!(r.by_area(), "sampled by area");
+    let mut worst = 0.0f32;
+    for (s, t) in [
+        (0.0, 0.0),
+        (0.0, 1.0),
+        (1.0, 0.0),
+        (1.0, 1.0),
+        (0.3, 0.7),
+        (0.9, 0.2),
+    ] {
+        let u = r.inverse(corner + ex * s + ey * t);
+        worst = worst.max((u - Vec2::new(s, t)).abs().max_element());
+    }
+    assert!(worst < 1e-6, "inverse off its coordinates by {worst:e}");
+}

@@ -122,7 +122,8 @@ pub fn polygon_size(pdf: f32, min_sr: f32) -> &'static str {
 
 /// True when `x` lies on the parallelogram corner + s·ex + t·ey (`v` = corner, ex, ey), within
 /// 1e-5 of the light's size and distance, in the plane and across it: an f32 point far from the
-/// origin is rounded on the scale of its distance, not of the light.
+/// origin is rounded on the scale of its distance, not of the light. In (s, t) that margin is
+/// scaled by the conditioning of the edges (1/sin of the angle between them).
 pub(crate) fn on_parallelogram(x: Vec3, v: [Vec3; 3]) -> bool {
     let d = x.as_dvec3() - v[0].as_dvec3();
     let (ex, ey) = (v[1].as_dvec3(), v[2].as_dvec3());
@@ -135,6 +136,11 @@ pub(crate) fn on_parallelogram(x: Vec3, v: [Vec3; 3]) -> bool {
     let t = (dy * xx - dx * xy) / det;
     let off = (d - ex * s - ey * t).length();
     let tol = 1e-5 * (ex.length() + ey.length() + v[0].as_dvec3().length());
-    let (ms, mt) = (tol / ex.length(), tol / ey.length());
+    // (s, t) move by up to |ey|/√det (|ex|/√det) per unit of the point's displacement in the
+    // plane: 1/|ex| (1/|ey|) for a rectangle, more for a skewed sliver, whose f32 samples,
+    // rounded by ε of the point, land far outside a rectangle's margin in (s, t) (found by the
+    // `warps` fuzz target: edges 1.3e-5 rad apart).
+    let sq = det.sqrt();
+    let (ms, mt) = (tol * ey.length() / sq, tol * ex.length() / sq);
     x.is_finite() && (-ms..=1.0 + ms).contains(&s) && (-mt..=1.0 + mt).contains(&t) && off <= tol
 }

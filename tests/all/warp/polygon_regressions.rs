@@ -519,3 +519,30 @@ fn a_skewed_parallelograms_inverse_returns_its_coordinates() {
     }
     assert!(worst < 1e-6, "inverse off its coordinates by {worst:e}");
 }
+
+/// A sliver parallelogram (edges 1.3e-5 rad apart, sampled by area) whose f32 sample, rounded by
+/// ε of the point, lies 1.6e-2 outside the light in (s, t), while the registry's domain test
+/// allowed 3e-5 there: the margin now scales with the edges' conditioning (found by the `warps`
+/// fuzz target, through `bilinear_rectangle`, whose area samples are the rectangle's).
+#[test]
+fn a_sliver_parallelograms_area_sample_is_on_the_light() {
+    use mcsample::registry::Sampler;
+    use mcsample::warp::{CosineRectangle, SolidAngleRectangle};
+    let v = [
+        Vec3::new(2.446719e-12, 2.446719e-12, 9.786876e-12),
+        Vec3::new(9.8439425e-12, 9.8439425e-12, 9.8439425e-12),
+        Vec3::new(9.8439425e-12, 9.8437205e-12, 9.8439425e-12),
+    ];
+    let u = Vec2::new(12582866.0, 0.17285156);
+    for s in [
+        Sampler::from(SolidAngleRectangle { v }),
+        Sampler::from(CosineRectangle {
+            v,
+            n: Vec3::new(0.6, 0.0, 0.8),
+        }),
+    ] {
+        let (x, pdf) = s.sample(u);
+        assert!(pdf > 0.0, "{}: dropped", s.name());
+        assert!(s.in_domain(x), "{}: {x} off the light", s.name());
+    }
+}

@@ -140,7 +140,7 @@ pub(crate) fn on_parallelogram(x: Vec3, v: [Vec3; 3]) -> bool {
     // plane: 1/|ex| (1/|ey|) for a rectangle, more for a skewed sliver, whose f32 samples,
     // rounded by ε of the point, land far outside a rectangle's margin in (s, t) (found by the
     // `warps` fuzz target: edges 1.3e-5 rad apart).
-    let sq = det.sqrt();
+    let sq = libm::sqrt(det);
     let (ms, mt) = (tol * ey.length() / sq, tol * ex.length() / sq);
     x.is_finite() && (-ms..=1.0 + ms).contains(&s) && (-mt..=1.0 + mt).contains(&t) && off <= tol
 }

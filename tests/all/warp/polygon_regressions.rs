@@ -528,21 +528,36 @@ fn a_skewed_parallelograms_inverse_returns_its_coordinates() {
 fn a_sliver_parallelograms_area_sample_is_on_the_light() {
     use mcsample::registry::Sampler;
     use mcsample::warp::{CosineRectangle, SolidAngleRectangle};
-    let v = [
-        Vec3::new(2.446719e-12, 2.446719e-12, 9.786876e-12),
-        Vec3::new(9.8439425e-12, 9.8439425e-12, 9.8439425e-12),
-        Vec3::new(9.8439425e-12, 9.8437205e-12, 9.8439425e-12),
+    let a = -8.80821e-5;
+    let cases = [
+        (
+            [
+                Vec3::new(2.446719e-12, 2.446719e-12, 9.786876e-12),
+                Vec3::new(9.8439425e-12, 9.8439425e-12, 9.8439425e-12),
+                Vec3::new(9.8439425e-12, 9.8437205e-12, 9.8439425e-12),
+            ],
+            Vec2::new(12582866.0, 0.17285156),
+        ),
+        (
+            [
+                Vec3::new(a, -4.1656866e-5, a),
+                Vec3::new(a, a, -8.808211e-5),
+                Vec3::splat(a),
+            ],
+            Vec2::new(0.03345694, a),
+        ),
     ];
-    let u = Vec2::new(12582866.0, 0.17285156);
-    for s in [
-        Sampler::from(SolidAngleRectangle { v }),
-        Sampler::from(CosineRectangle {
-            v,
-            n: Vec3::new(0.6, 0.0, 0.8),
-        }),
-    ] {
-        let (x, pdf) = s.sample(u);
-        assert!(pdf > 0.0, "{}: dropped", s.name());
-        assert!(s.in_domain(x), "{}: {x} off the light", s.name());
+    for (v, u) in cases {
+        for s in [
+            Sampler::from(SolidAngleRectangle { v }),
+            Sampler::from(CosineRectangle {
+                v,
+                n: Vec3::new(0.6, 0.0, 0.8),
+            }),
+        ] {
+            let (x, pdf) = s.sample(u);
+            assert!(pdf > 0.0, "{}: dropped", s.name());
+            assert!(s.in_domain(x), "{}: {x} off the light", s.name());
+        }
     }
 }

@@ -1,7 +1,8 @@
 //! Warps: maps from the unit square to the domains of direct illumination, each with its pdf and
 //! its inverse, side by side in the file of its family (`disk`, `hemisphere`, `sphere`, `cone`,
-//! `phong`, `triangle`, `spherical_triangle`, `spherical_rectangle`, `tent`), and the
-//! bilinear warp composed with the spherical polygons (`bilinear`).
+//! `phong`, `triangle`, `spherical_triangle`, `spherical_rectangle`, `tent`), the bilinear
+//! warp composed with the spherical polygons (`bilinear`), and triangles sampled by projected
+//! solid angle for a receiver's normal (`projected`: [`projected_triangle`]).
 //!
 //! # One function, every width
 //!
@@ -53,6 +54,7 @@ pub(crate) mod family;
 mod hemisphere;
 mod phong;
 mod polygon;
+mod projected;
 mod solid_angle;
 mod sphere;
 mod spherical_rectangle;
@@ -83,6 +85,10 @@ pub use hemisphere::{
 pub(crate) use phong::phong_lobe_density;
 pub use phong::{PHONG_N_MAX, PhongLobe, phong_lobe, phong_lobe_inverse, phong_lobe_pdf};
 pub(crate) use polygon::{dot_wide, plane_dot, wide_cross};
+pub use projected::{
+    PROJECTED_MAX_CANCELLATION, PROJECTED_MIN_SR, ProjectedTriangle, projected_triangle,
+    projected_triangle_inverse, projected_triangle_pdf,
+};
 pub use solid_angle::{SolidAngleRectangle, SolidAngleTriangle, polygon_size};
 pub use sphere::{UniformSphere, uniform_sphere, uniform_sphere_inverse, uniform_sphere_pdf};
 pub use spherical_rectangle::{

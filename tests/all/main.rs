@@ -38,6 +38,7 @@ mod warp {
     mod hard_cases;
     mod lanes;
     mod polygon_regressions;
+    mod projected;
     #[cfg(not(target_family = "wasm"))]
     mod properties;
     #[cfg(not(target_family = "wasm"))]

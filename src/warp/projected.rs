@@ -1,0 +1,591 @@
+//! Polygons sampled by projected solid angle (Peters, "BRDF Importance Sampling for Polygonal
+//! Lights", ACM TOG 40(4), 2021): directions towards a triangle or parallelogram distributed as
+//! the receiver's cosine n·ω over the light, exactly, with pdf n·ω / P per steradian.
+//!
+//! In the shading frame (+z along n) the polygon is clipped to the upper hemisphere and projected
+//! orthographically onto the unit disk, where projected solid angle is area (Nusselt). Each edge
+//! becomes an arc of a centred ellipse; the arc from a to b of a great circle with unit normal m̂
+//! sweeps the signed area ½·θ·m̂_z from the centre (θ its length), so that P = ½ Σ θᵢ·m̂ᵢ_z, which
+//! is Lambert's formula for the irradiance of the polygon at radiance 1. With the edges' normals
+//! pointing into the polygon, edges with m̂_z > 0 are "outer" (far from the centre), and those
+//! with m̂_z < 0 "inner" (towards it).
+//!
+//! - **Central case** (the normal inside the polygon): every edge is outer, and the region is a
+//!   fan of ellipse sectors, each the linear image of a circular sector. u₀·P picks the sector and
+//!   the angle along its arc in closed form (area is linear in the arc's angle), and u₁ the
+//!   squared radius: exact, with no solve.
+//! - **Decentral case**: each azimuth between the polygon's two extreme directions meets one
+//!   inner and one outer edge. The azimuth comes from the area F(d) swept up to direction d,
+//!   F(d) = u₀·P, by a bracketed Newton solve (F′ = ½(r_o² − r_i²) per radian); the squared
+//!   radius is uniform between the two ellipses.
+//!
+//! Lifting the disk's point p to ω = (p, √(1 − |p|²)) gives the density n·ω / P per steradian.
+//! P, a sum of terms of both signs in the decentral case, cancels for small or distant lights;
+//! below [`PROJECTED_MIN_SR`] the light is sampled by solid angle instead (the spherical
+//! samplers, with their own area fallback), and the pdf is theirs.
+
+use core::marker::PhantomData;
+
+use crate::frame::Frame;
+use crate::lane::{Lane, Mask, V2, V3};
+use crate::math::Math;
+use crate::point::{Point2, Point3};
+use crate::warp::SphericalTriangle;
+use crate::warp::common::clamp_u;
+use crate::warp::polygon::EdgePlanes;
+
+/// The projected solid angle (irradiance at radiance 1, in units of sr) below which a polygon is
+/// sampled by solid angle rather than by projected solid angle.
+pub const PROJECTED_MIN_SR: f32 = 1e-4;
+
+/// The largest ratio Σ|Sᵢ| / P of the edges' signed areas Sᵢ to their sum P for which a polygon
+/// is sampled by projected solid angle in f32: P carries an error of about 2.4e-6 of Σ|Sᵢ|
+/// there (measured over random triangles), so this keeps it within 1e-5. The f64 instance
+/// allows the ratio scaled by f32's ε over f64's.
+pub const PROJECTED_MAX_CANCELLATION: f32 = 4.0;
+
+/// Iterations of the decentral case's azimuth solve.
+const SOLVE_STEPS: usize = 12;
+
+/// One edge of the clipped polygon in the shading frame.
+#[derive(Clone, Copy, Default)]
+struct Edge<L> {
+    /// Unit start and end.
+    a: V3<L>,
+    b: V3<L>,
+    /// Unit normal of the edge's great circle, pointing into the polygon; 0 for a degenerate edge.
+    m: V3<L>,
+    /// ½·θ·m̂_z: the signed area the arc sweeps from the disk's centre.
+    area: L,
+    /// θ, the arc's length.
+    theta: L,
+}
+
+/// The set-up of the projected-solid-angle map of a convex polygon of `N` vertices, clipped to
+/// `K` = 2N slots (vertices repeated where clipping removed some: a repeated vertex makes an
+/// edge of length 0, which sweeps nothing).
+#[derive(Clone, Copy)]
+struct Projected<L: Math, const N: usize, const K: usize> {
+    frame: Frame<V3<L>>,
+    e: [Edge<L>; K],
+    /// P, the projected area.
+    p: L,
+    /// The normal lies inside (or on the boundary of) the clipped polygon.
+    central: L::Mask,
+    /// Unit 2D directions of the least and greatest azimuth (decentral case).
+    lo: V2<L>,
+    hi: V2<L>,
+    /// The inside test of the whole (unclipped) polygon.
+    edges: EdgePlanes<L, N>,
+    /// P ≥ [`PROJECTED_MIN_SR`] and everything finite.
+    valid: L::Mask,
+}
+
+/// 2D cross product of the xy parts: exactly 0 for equal vectors (no fused multiply-add).
+#[inline(always)]
+fn cross2<L: Lane>(a: V2<L>, b: V2<L>) -> L {
+    a.x * b.y - a.y * b.x
+}
+
+#[inline(always)]
+fn xy<L: Lane>(v: V3<L>) -> V2<L> {
+    V2::new(v.x, v.y)
+}
+
+/// The angle between two vectors of any length, by atan2 of |a × b| and a·b: accurate at every
+/// angle, unlike acos.
+#[inline(always)]
+fn angle<L: Math>(a: V3<L>, b: V3<L>) -> L {
+    a.cross(b).length().atan2(a.dot(b))
+}
+
+/// A positive multiple of the point of the great circle with normal m at azimuth d (a 2D
+/// direction): (|m_z|·d, −sgn(m_z)·(m_xy·d)), which lies in the plane m·ω = 0.
+#[inline(always)]
+fn arc_point<L: Math>(m: V3<L>, d: V2<L>) -> V3<L> {
+    let lambda = m.z.abs();
+    let z = -(L::ONE.copysign(m.z) * m.x.mul_add(d.x, m.y * d.y));
+    V3::new(lambda * d.x, lambda * d.y, z)
+}
+
+/// 1 − r² of the projected great circle with normal m along the unit 2D direction d, and r²:
+/// ((m_xy·d)², m_z²) / (m_z² + (m_xy·d)²), neither formed as a difference.
+#[inline(always)]
+fn radii<L: Math>(m: V3<L>, d: V2<L>) -> (L, L) {
+    let k = m.x.mul_add(d.x, m.y * d.y);
+    let k2 = k * k;
+    let z2 = m.z * m.z;
+    let s = z2 + k2;
+    (k2 / s, z2 / s)
+}
+
+/// Where the edge of the polygon from `s` to `e` crosses the horizon z = 0 (both given as
+/// directions, one on each side), as a unit direction.
+#[inline(always)]
+fn horizon_crossing<L: Math>(s: V3<L>, e: V3<L>) -> V3<L> {
+    let x = e.scale(s.z) - s.scale(e.z);
+    let x = V3::new(x.x, x.y, L::ZERO);
+    x.scale(L::ONE.copysign(s.z - e.z)).normalize()
+}
+
+impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
+    /// The polygon `v` (directions from the shading point, in world space, convex, either
+    /// winding) as seen by a receiver with unit normal `n`.
+    #[inline(always)]
+    fn new(v: [V3<L>; N], n: V3<L>) -> Self {
+        // Normalised here: a frame from a normal an ulp off unit is that far from orthonormal,
+        // and the pdf's round trip through it that far off.
+        let n = n.normalize();
+        let frame = Frame::from_normal(n);
+        let units = v.map(|p| frame.to_local(p.normalize_scaled()));
+        // Inward normals: the winding for which v₀·(v₁ × v₂) > 0.
+        let (u0, u1, u2) = (first(&units, 0), first(&units, 1), first(&units, 2));
+        let winding = u0.dot(u1.cross(u2));
+        let flip = winding.lt(L::ZERO);
+        let mut w = units;
+        let mut rev = units;
+        rev.reverse();
+        for (x, r) in w.iter_mut().zip(rev) {
+            *x = V3::select(flip, r, *x);
+        }
+        // The polygon's own edge planes, for the pdf's inside test.
+        let mut planes = [V3::default(); N];
+        for ((pl, a), b) in planes.iter_mut().zip(w).zip(w.iter().cycle().skip(1)) {
+            *pl = a.cross(*b).normalize();
+        }
+        let slots = clip::<L, N, K>(w);
+        let mut e = [Edge::default(); K];
+        let mut p = L::ZERO;
+        let mut central = L::ZERO.le(L::ZERO);
+        let mut magnitude = L::ZERO;
+        for ((edge, a), b) in e.iter_mut().zip(slots).zip(slots.iter().cycle().skip(1)) {
+            let m = a.cross(*b);
+            let len = m.length();
+            let m = V3::select(len.gt(L::ZERO), m.scale(L::ONE / len), V3::all(L::ZERO));
+            let theta = len.atan2(a.dot(*b));
+            let area = L::HALF * theta * m.z;
+            central = central & m.z.ge(L::ZERO);
+            p = p + area;
+            magnitude = magnitude + area.abs();
+            *edge = Edge {
+                a,
+                b: *b,
+                m,
+                area,
+                theta,
+            };
+        }
+        // The extreme azimuths: the slot every other slot lies counter-clockwise (clockwise)
+        // of, within half a turn.
+        let (mut lo, mut hi) = (V2::default(), V2::default());
+        for a in slots {
+            let (mut is_lo, mut is_hi) = (L::ZERO.le(L::ZERO), L::ZERO.le(L::ZERO));
+            for b in slots {
+                let c = cross2(xy(a), xy(b));
+                is_lo = is_lo & c.ge(L::ZERO);
+                is_hi = is_hi & c.le(L::ZERO);
+            }
+            let d = unit2(xy(a));
+            lo = V2::select(is_lo, d, lo);
+            hi = V2::select(is_hi, d, hi);
+        }
+        // P is a sum of terms of both signs in the decentral case, each known to a few ε of
+        // its size; where they cancel by more than PROJECTED_MAX_CANCELLATION, P is not known
+        // to 1e-5.
+        let known = magnitude
+            .le(p * L::c(PROJECTED_MAX_CANCELLATION as f64 * f32::EPSILON as f64) / L::EPSILON);
+        let valid = p.ge(L::c(PROJECTED_MIN_SR as f64)) & known & p.is_finite() & n.z.is_finite();
+        Self {
+            frame,
+            e,
+            p,
+            central,
+            lo,
+            hi,
+            edges: EdgePlanes::new(planes, L::ONE, p),
+            valid,
+        }
+    }
+
+    /// A local unit direction for u, in the projected polygon.
+    #[inline(always)]
+    fn sample_local(&self, u: V2<L>) -> V3<L> {
+        let target = u.x * self.p;
+        let c = if self.central.any() {
+            self.sample_central(target, u.y)
+        } else {
+            V3::default()
+        };
+        let d = if (!self.central).any() {
+            self.sample_decentral(target, u.y)
+        } else {
+            V3::default()
+        };
+        V3::select(self.central, c, d)
+    }
+
+    /// The central case: the sector whose cumulative area brackets `target`, the angle along
+    /// its arc from the area (½·t·m̂_z), and the radius from u₁.
+    #[inline(always)]
+    fn sample_central(&self, target: L, u1: L) -> V3<L> {
+        let mut cum = L::ZERO;
+        let mut pick = Edge::default();
+        let mut before = L::ZERO;
+        for e in &self.e {
+            let take = cum.le(target) & e.area.gt(L::ZERO);
+            pick = select_edge(take, *e, pick);
+            before = L::select(take, cum, before);
+            cum = cum + e.area;
+        }
+        let t = ((target - before) * L::TWO / pick.m.z)
+            .max(L::ZERO)
+            .min(pick.theta);
+        let (s, c) = t.sin_cos();
+        // The arc's point at angle t from a, in the plane with normal m̂.
+        let w = pick.a.scale(c) + pick.m.cross(pick.a).scale(s);
+        // The point √u₁ of the way out along it; z² = 1 − u₁(1 − w_z²), as a sum of
+        // non-negative terms.
+        let r = u1.sqrt();
+        let z2 = (L::ONE - u1).mul_add(L::ONE, u1 * w.z * w.z);
+        V3::new(w.x * r, w.y * r, z2.max(L::ZERO).sqrt())
+    }
+
+    /// F(d): the area of the projected polygon between its least azimuth and unit 2D direction
+    /// d, and the outer and inner edges that direction meets.
+    ///
+    /// An edge counts whole where both ends are at or before d, and in part where one is at or
+    /// before and the other after (one edge of each chain). The edges returned for the radii
+    /// also take an edge that ends exactly at d, so that the greatest azimuth, where nothing
+    /// lies after, still has its two (coincident) ellipses.
+    #[inline(always)]
+    fn swept(&self, d: V2<L>) -> (L, Edge<L>, Edge<L>) {
+        let mut full = L::ZERO;
+        let (mut outer, mut inner) = (Edge::default(), Edge::default());
+        let (mut part_o, mut part_i) = (Edge::default(), Edge::default());
+        let (mut low_o, mut low_i) = (V3::default(), V3::default());
+        for e in &self.e {
+            let (ca, cb) = (cross2(xy(e.a), d), cross2(xy(e.b), d));
+            let (a_le, b_le) = (ca.ge(L::ZERO), cb.ge(L::ZERO));
+            let (a_ge, b_ge) = (ca.le(L::ZERO), cb.le(L::ZERO));
+            full = full + L::select(a_le & b_le, e.area, L::ZERO);
+            let spans = (a_le & !b_le) | (b_le & !a_le);
+            let meets = (a_le & b_ge) | (b_le & a_ge);
+            let low = V3::select(a_le, e.a, e.b);
+            let (o, i) = (e.m.z.gt(L::ZERO), e.m.z.lt(L::ZERO));
+            part_o = select_edge(spans & o, *e, part_o);
+            part_i = select_edge(spans & i, *e, part_i);
+            low_o = V3::select(spans & o, low, low_o);
+            low_i = V3::select(spans & i, low, low_i);
+            outer = select_edge(meets & o, *e, outer);
+            inner = select_edge(meets & i, *e, inner);
+        }
+        let part = |e: Edge<L>, low: V3<L>| L::HALF * e.m.z * angle(low, arc_point(e.m, d));
+        (
+            full + part(part_o, low_o) + part(part_i, low_i),
+            outer,
+            inner,
+        )
+    }
+
+    /// The decentral case: the azimuth where F = target by a bracketed Newton solve over the
+    /// chord between the extreme azimuths, then the squared radius uniform between the inner
+    /// and outer ellipses.
+    ///
+    /// The region narrows to a point at both extremes (a vertex), where F grows as the square
+    /// of the distance and Newton on F itself converges only linearly. The solve is on
+    /// √F − √target in the first half of the area and √(P − F) − √(P − target) in the second,
+    /// which are nearly linear there: one step from a seed at the right distance is exact for
+    /// a corner of straight sides.
+    #[inline(always)]
+    fn sample_decentral(&self, target: L, u1: L) -> V3<L> {
+        let lo = self.lo;
+        let lo_perp = V2::new(-lo.y, lo.x);
+        let width = cross2(lo, self.hi).atan2(lo.dot(self.hi));
+        let upper = target.gt(L::HALF * self.p);
+        // The distance from the nearer end, as area: the target measured from that end.
+        let rest = L::select(upper, self.p - target, target);
+        let root = rest.sqrt();
+        let (mut a, mut b) = (L::ZERO, width);
+        // The seed of a rhombus: F = 2P·(ψ/Ψ)² up to the middle.
+        let k = (rest / (L::TWO * self.p)).sqrt() * width;
+        let mut psi = L::select(upper, width - k, k);
+        let mut best = L::c(f64::INFINITY);
+        let mut last = (V2::default(), Edge::default(), Edge::default());
+        for _ in 0..SOLVE_STEPS {
+            let (sin, cos) = psi.sin_cos();
+            let d = V2::new(
+                lo.x.mul_add(cos, lo_perp.x * sin),
+                lo.y.mul_add(cos, lo_perp.y * sin),
+            );
+            let (f, o, i) = self.swept(d);
+            // The closest so far: once converged, rounding can send a step out of the bracket,
+            // and the bisection that follows away from the solution.
+            let err = (f - target).abs();
+            let better = err.le(best);
+            best = L::select(better, err, best);
+            last = (
+                V2::select(better, d, last.0),
+                select_edge(better, o, last.1),
+                select_edge(better, i, last.2),
+            );
+            let below = f.lt(target);
+            a = L::select(below, psi, a);
+            b = L::select(below, b, psi);
+            let (_, ro) = radii(o.m, d);
+            let (_, ri) = radii(i.m, d);
+            // dF/dψ = ½(r_o² − r_i²); d√G/dψ = ±F′/(2√G).
+            let slope = L::HALF * (ro - ri);
+            let g = L::select(upper, self.p - f, f).max(L::ZERO).sqrt();
+            let dg = L::select(upper, -slope, slope) / (L::TWO * g);
+            let next = psi - (g - root) / dg;
+            // Newton where it stays in the bracket, else bisection.
+            let to = L::select(next.gt(a) & next.lt(b), next, L::HALF * (a + b));
+            psi = L::select(f.eq(target), psi, to);
+        }
+        let (d, o, i) = last;
+        let (zo, ro) = radii(o.m, d);
+        let (zi, ri) = radii(i.m, d);
+        let r2 = u1.mul_add(ro - ri, ri);
+        let z2 = u1.mul_add(zo - zi, zi);
+        let r = r2.max(L::ZERO).sqrt();
+        V3::new(d.x * r, d.y * r, z2.max(L::ZERO).sqrt())
+    }
+
+    /// u for a local unit direction w (inverse of `sample_local`).
+    #[inline(always)]
+    fn inverse_local(&self, w: V3<L>) -> V2<L> {
+        let d = unit2(xy(w));
+        let rho2 = w.x.mul_add(w.x, w.y * w.y);
+        // Central: the sector whose azimuth range holds d.
+        let mut cum = L::ZERO;
+        let mut area = L::ZERO;
+        let mut u1c = L::ZERO;
+        for e in &self.e {
+            let here = cross2(xy(e.a), d).ge(L::ZERO)
+                & cross2(d, xy(e.b)).gt(L::ZERO)
+                & e.area.gt(L::ZERO);
+            let part = L::HALF * e.m.z * angle(e.a, arc_point(e.m, d));
+            area = L::select(here, cum + part, area);
+            let (_, r2) = radii(e.m, d);
+            u1c = L::select(here, rho2 / r2, u1c);
+            cum = cum + e.area;
+        }
+        // Decentral: the area swept up to d, and where the radius lies between the ellipses.
+        let (f, o, i) = self.swept(d);
+        let (zo, _) = radii(o.m, d);
+        let (zi, _) = radii(i.m, d);
+        let u1d = (zi - w.z * w.z) / (zi - zo);
+        let u0 = L::select(self.central, area, f) / self.p;
+        V2::new(u0, L::select(self.central, u1c, u1d))
+    }
+}
+
+/// The unit vector along a 2D vector (NaN for 0).
+#[inline(always)]
+fn unit2<L: Math>(v: V2<L>) -> V2<L> {
+    let k = L::ONE / v.length_squared().sqrt();
+    V2::new(v.x * k, v.y * k)
+}
+
+#[inline(always)]
+fn select_edge<L: Math>(m: L::Mask, a: Edge<L>, b: Edge<L>) -> Edge<L> {
+    Edge {
+        a: V3::select(m, a.a, b.a),
+        b: V3::select(m, a.b, b.b),
+        m: V3::select(m, a.m, b.m),
+        area: L::select(m, a.area, b.area),
+        theta: L::select(m, a.theta, b.theta),
+    }
+}
+
+/// Element i of a vertex array (0 past its end, which callers never reach).
+#[inline(always)]
+fn first<L: Lane, const N: usize>(v: &[V3<L>; N], i: usize) -> V3<L> {
+    v.get(i).copied().unwrap_or_default()
+}
+
+/// The convex polygon `w` (unit directions, local frame) clipped to z ≥ 0, as K = 2N slots:
+/// for each edge, where it enters the upper hemisphere (or the previous slot again) and its end
+/// (or the previous slot again), by Sutherland–Hodgman. Two passes, so that the first slots
+/// repeat the last point emitted rather than a point outside. Nothing above the horizon leaves
+/// every slot at w₀, a polygon of area 0.
+#[inline(always)]
+fn clip<L: Math, const N: usize, const K: usize>(w: [V3<L>; N]) -> [V3<L>; K] {
+    let mut last = first(&w, 0);
+    let mut slots = [V3::default(); K];
+    for pass in 0..2 {
+        let mut out = slots.iter_mut();
+        for (s, e) in w.iter().zip(w.iter().cycle().skip(1)) {
+            let (s_in, e_in) = (s.z.ge(L::ZERO), e.z.ge(L::ZERO));
+            let crossing = horizon_crossing(*s, *e);
+            last = V3::select((s_in & !e_in) | (e_in & !s_in), crossing, last);
+            let enter = last;
+            last = V3::select(e_in, *e, last);
+            if pass == 1 {
+                if let Some(o) = out.next() {
+                    *o = enter;
+                }
+                if let Some(o) = out.next() {
+                    *o = last;
+                }
+            }
+        }
+    }
+    slots
+}
+
+/// A triangle sampled by projected solid angle for a receiver with unit normal `n`: see
+/// [`projected_triangle`]. The set-up (clipping, P, the frame) is paid once.
+#[derive(Clone, Copy)]
+pub struct ProjectedTriangle<P: Point3> {
+    core: Projected<P::Lane, 3, 6>,
+    base: SphericalTriangle<P>,
+    width: PhantomData<P>,
+}
+
+impl<P: Point3<Lane = L>, L: Math> ProjectedTriangle<P> {
+    /// The triangle with vertices `a`, `b`, `c` relative to the shading point, in either
+    /// winding, seen by a receiver with unit normal `n`.
+    #[inline]
+    pub fn new(a: P, b: P, c: P, n: P) -> Self {
+        Self {
+            core: Projected::new([a, b, c].map(Point3::to_lanes), n.to_lanes()),
+            base: SphericalTriangle::new(a, b, c),
+            width: PhantomData,
+        }
+    }
+
+    /// P, the projected solid angle of the part of the triangle above the receiver's horizon:
+    /// its irradiance at radiance 1.
+    #[inline]
+    pub fn projected_area(&self) -> L {
+        self.core.p
+    }
+
+    /// True (lane by lane) where the triangle is sampled by solid angle instead: P below
+    /// [`PROJECTED_MIN_SR`], or a normal that is not finite.
+    #[inline]
+    pub fn by_solid_angle(&self) -> L::Mask {
+        !self.core.valid
+    }
+
+    /// See [`projected_triangle`].
+    #[inline]
+    pub fn sample(&self, u: P::Vec2) -> (P, L) {
+        let u = u.to_lanes();
+        let c = &self.core;
+        let (mut w, mut pdf) = (V3::default(), L::ZERO);
+        if c.valid.any() {
+            let local = c.sample_local(clamp_u(u));
+            w = c.frame.to_world(local).normalize();
+            // The pdf function's own path, normalisation included, so that the two agree bit
+            // for bit.
+            pdf = c.pdf(w.normalize_scaled());
+        }
+        if (!c.valid).any() {
+            let (wb, pb) = self.base.sample(P::Vec2::from_lanes(u));
+            w = V3::select(c.valid, w, wb.to_lanes());
+            pdf = L::select(c.valid, pdf, pb);
+        }
+        let pdf = L::select(u.any_nan(), L::ZERO, pdf);
+        let w = V3::select(pdf.gt(L::ZERO), w, V3::new(L::ZERO, L::ZERO, L::ONE));
+        (P::from_lanes(w), pdf)
+    }
+
+    /// See [`projected_triangle_pdf`].
+    #[inline]
+    pub fn pdf(&self, w: P) -> L {
+        let c = &self.core;
+        let own = if c.valid.any() {
+            c.pdf(w.to_lanes().normalize_scaled())
+        } else {
+            L::ZERO
+        };
+        let base = if (!c.valid).any() {
+            self.base.pdf(w)
+        } else {
+            L::ZERO
+        };
+        L::select(c.valid, own, base)
+    }
+
+    /// See [`projected_triangle_inverse`].
+    #[inline]
+    pub fn inverse(&self, w: P) -> P::Vec2 {
+        let c = &self.core;
+        let w = w.to_lanes();
+        let own = if c.valid.any() {
+            c.inverse(w)
+        } else {
+            V2::default()
+        };
+        let base = if (!c.valid).any() {
+            self.base.inverse(P::from_lanes(w)).to_lanes()
+        } else {
+            V2::default()
+        };
+        P::Vec2::from_lanes(V2::select(c.valid, own, base))
+    }
+}
+
+impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
+    /// n·ω / P where unit direction w (world) is inside the polygon and above the horizon.
+    #[inline(always)]
+    fn pdf(&self, w: V3<L>) -> L {
+        let local = self.frame.to_local(w);
+        let inside = self.edges.contains(local) & local.z.gt(L::ZERO) & self.valid;
+        L::select(inside, local.z / self.p, L::ZERO)
+    }
+
+    /// u of a direction (any positive multiple), clamped to the square; NaN gives NaN.
+    #[inline(always)]
+    fn inverse(&self, w: V3<L>) -> V2<L> {
+        let local = self.frame.to_local(w.normalize_scaled());
+        let u = clamp_u(self.inverse_local(local));
+        u.nan_where(w.any_nan())
+    }
+}
+
+/// A direction towards triangle (a, b, c) (vertices relative to the shading point, in either
+/// winding), distributed as the cosine n·ω of a receiver with unit normal `n` over the part of
+/// the triangle above its horizon, and its pdf per steradian n·ω / P (P the projected solid
+/// angle, [`ProjectedTriangle::projected_area`]). [`projected_triangle_pdf`] gives the same
+/// number, bit for bit, at the returned direction.
+///
+/// Peters' map (2021): exact in the central case, a solve of f32
+/// accuracy in the decentral one. Below [`PROJECTED_MIN_SR`] (a light that small or that far
+/// below the horizon), and for a normal that is not finite, it is
+/// [`spherical_triangle`](crate::warp::spherical_triangle) instead, with that pdf.
+///
+/// u is clamped to [0, 1]². A triangle wholly below the horizon, degenerate geometry and NaN in
+/// u give pdf 0 and direction +z.
+#[inline]
+pub fn projected_triangle<P: Point2<Lane = L>, L: Math>(
+    u: P,
+    a: P::Vec3,
+    b: P::Vec3,
+    c: P::Vec3,
+    n: P::Vec3,
+) -> (P::Vec3, L) {
+    ProjectedTriangle::new(a, b, c, n).sample(u)
+}
+
+/// pdf per steradian that [`projected_triangle`] returns direction `w` (unit): n·ω / P inside
+/// the triangle and above the horizon, else 0 (also for NaN).
+#[inline]
+pub fn projected_triangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P, c: P, n: P) -> L {
+    ProjectedTriangle::new(a, b, c, n).pdf(w)
+}
+
+/// Inverse of [`projected_triangle`]: the u that maps to direction `w`, clamped to the square.
+/// NaN gives NaN.
+#[inline]
+pub fn projected_triangle_inverse<P: Point3<Lane = L>, L: Math>(
+    w: P,
+    a: P,
+    b: P,
+    c: P,
+    n: P,
+) -> P::Vec2 {
+    ProjectedTriangle::new(a, b, c, n).inverse(w)
+}

@@ -86,7 +86,7 @@ pub(crate) use phong::phong_lobe_density;
 pub use phong::{PHONG_N_MAX, PhongLobe, phong_lobe, phong_lobe_inverse, phong_lobe_pdf};
 pub(crate) use polygon::{dot_wide, plane_dot, wide_cross};
 pub use projected::{
-    PROJECTED_MAX_CANCELLATION, PROJECTED_MIN_SR, ProjectedTriangle, projected_triangle,
+    PROJECTED_MAX_SPREAD, PROJECTED_MIN_SR, ProjectedTriangle, projected_triangle,
     projected_triangle_inverse, projected_triangle_pdf,
 };
 pub use solid_angle::{SolidAngleRectangle, SolidAngleTriangle, polygon_size};

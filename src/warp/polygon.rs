@@ -215,6 +215,16 @@ impl<L: Math, const N: usize> EdgePlanes<L, N> {
         }
     }
 
+    /// The same planes with `extra` radians more slack: for a sampler whose samples pass
+    /// through more rounding than the spherical maps' (a rotation to a local frame and back).
+    #[inline(always)]
+    pub(crate) fn widened(self, extra: L) -> Self {
+        Self {
+            m: self.m,
+            slack: self.slack - extra,
+        }
+    }
+
     /// True where unit direction `w` lies inside the polygon, or within [`inside_slack`] of it.
     /// Unlike intersecting w with the polygon's plane, this stays well-conditioned when the
     /// polygon is seen at a grazing angle. NaN gives false.

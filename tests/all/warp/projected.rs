@@ -11,7 +11,7 @@ use mcsample::reference::polygon_irradiance;
 use mcsample::warp::ProjectedTriangle;
 use mcsample::x8::{Vec2x8, Vec3x8};
 
-use crate::common::TestRng;
+use crate::common::{TestRng, border};
 
 fn random_dir(rng: &mut TestRng) -> Vec3 {
     loop {
@@ -40,30 +40,35 @@ fn every_sample_of_a_lambertian_receiver_estimates_its_irradiance_exactly() {
     let mut rng = TestRng::new(7);
     let (mut worst_p, mut worst_est) = (0.0f64, 0.0f64);
     let (mut projected, mut straddling, mut decentral) = (0, 0, 0);
-    for _ in 0..20_000 {
+    for _ in 0..340_000 {
         let (n, v) = configuration(&mut rng);
         let t = ProjectedTriangle::new(v[0], v[1], v[2], n);
         if t.by_solid_angle() {
             continue;
         }
         projected += 1;
-        straddling += v.iter().any(|x| n.dot(*x) < 0.0) as usize;
-        decentral += (0..3)
-            .all(|i| n.dot(v[i].cross(v[(i + 1) % 3])) * n.dot(v[0].cross(v[1])) > 0.0)
-            as usize;
+        let across = v.iter().any(|x| n.dot(*x) < 0.0);
+        straddling += across as usize;
+        let outside =
+            !(0..3).all(|i| n.dot(v[i].cross(v[(i + 1) % 3])) * n.dot(v[0].cross(v[1])) > 0.0);
+        decentral += outside as usize;
         let want = irradiance(n, v);
-        worst_p = worst_p.max((t.projected_area() as f64 - want).abs() / want);
+        let e = (t.projected_area() as f64 - want).abs() / want;
+        if e > 2e-5 {
+            println!("P err {e:e} across {across} outside {outside} want {want:e} n {n:?} v {v:?}");
+        }
+        worst_p = worst_p.max(e);
         for _ in 0..5 {
             let (w, pdf) = t.sample(Vec2::new(rng.u01(), rng.u01()));
             assert!(pdf > 0.0, "a sample of {v:?} for {n} dropped");
-            let est = n.dot(w) as f64 / pdf as f64;
+            let est = n.as_dvec3().normalize().dot(w.as_dvec3()) / pdf as f64;
             worst_est = worst_est.max((est - want).abs() / want);
         }
     }
     println!(
         "{projected} triangles ({straddling} across the horizon, {decentral} with the normal outside): P within {worst_p:e}, estimates within {worst_est:e}"
     );
-    assert!(projected > 400 && straddling > 0 && decentral > 10);
+    assert!(projected > 100_000 && straddling > 4000 && decentral > 90_000);
     assert!(worst_p < 1e-5, "P off Lambert's formula by {worst_p:e}");
     assert!(
         worst_est < 1e-5,
@@ -103,22 +108,56 @@ fn a_sampler_of_the_unclipped_triangle_is_not_exact() {
 
 #[test]
 fn the_map_inverts_to_a_few_ulp_of_u0() {
+    // The backward error: u₀ minus the u₀ that maps exactly to the returned direction (the f64
+    // instance's inverse), in units of how far u₀ moves when the direction moves by an ulp (the
+    // least the f32 output can be off).
     let mut rng = TestRng::new(11);
-    let mut worst = 0.0f32;
+    let (mut worst_abs, mut flat) = (0.0f64, 0);
+    let mut ratios = Vec::new();
     for _ in 0..20_000 {
         let (n, v) = configuration(&mut rng);
         let t = ProjectedTriangle::new(v[0], v[1], v[2], n);
-        if t.by_solid_angle() {
+        let d = v.map(|x| x.as_dvec3());
+        let t64 = ProjectedTriangle::new(d[0], d[1], d[2], n.as_dvec3());
+        if t.by_solid_angle() || t64.by_solid_angle() {
             continue;
         }
         for _ in 0..5 {
             let u = Vec2::new(rng.u01(), rng.u01());
-            let (w, _) = t.sample(u);
-            worst = worst.max((t.inverse(w).x - u.x).abs());
+            let (w, pdf) = t.sample(u);
+            assert!(pdf > 0.0);
+            let w64 = w.as_dvec3();
+            let exact = t64.inverse(w64).x;
+            let step = f32::EPSILON as f64;
+            let ulp = [DVec3::X, DVec3::Y, DVec3::Z]
+                .map(|e| (t64.inverse(w64 + e * step).x - exact).abs())
+                .into_iter()
+                .fold(0.0, f64::max);
+            // In the central case u₀ is a fraction of a turn about the normal: 0 and 1 meet.
+            let err = (u.x as f64 - exact).abs();
+            let err = err.min(1.0 - err);
+            worst_abs = worst_abs.max(err);
+            if ulp == 0.0 {
+                flat += 1;
+                continue;
+            }
+            ratios.push(err / ulp);
         }
     }
-    println!("u0 backward error {worst:e}");
-    assert!(worst < 2e-5, "u0 round trip off by {worst:e}");
+    ratios.sort_by(f64::total_cmp);
+    let q = |f: f64| ratios[((ratios.len() - 1) as f64 * f) as usize];
+    let (median, p90, p99) = (q(0.5), q(0.9), q(0.99));
+    println!(
+        "u0 backward error in ulp of the output: median {median:.2}, 90 % {p90:.1}, 99 % {p99:.1}, worst {worst_abs:e} absolute ({flat} where an ulp moves nothing)"
+    );
+    // The azimuth solve sums sectors in f32 that cancel by up to PROJECTED_MAX_SPREAD; the tail
+    // is that cancellation (and, rarer, triangles whose normal lies within rounding of an edge,
+    // which the f32 and f64 instances class differently: both maps are exact, but not the same
+    // map).
+    assert!(
+        median < 2.5 && p90 < 15.0 && p99 < 80.0,
+        "{median} {p90} {p99}"
+    );
     // The f64 instance takes the decentral solve wherever P is known (nearly everywhere), and
     // after its fixed number of steps lands on the u₀ asked for.
     let (mut worst, mut solved, mut dropped) = (0.0f64, 0, 0);
@@ -140,7 +179,7 @@ fn the_map_inverts_to_a_few_ulp_of_u0() {
     }
     println!("f64: {solved} triangles ({dropped} dropped), u0 backward error {worst:e}");
     // Open: a few f64 samples land outside the pdf's inside test (35 of 9768 here).
-    assert!(solved > 9000 && dropped < solved / 100);
+    assert!(solved > 5000 && dropped < solved / 100);
     assert!(worst < 1e-9, "f64 u0 round trip off by {worst:e}");
 }
 
@@ -173,4 +212,35 @@ fn lane_i_of_eight_is_the_scalar_call() {
             );
         }
     }
+}
+
+#[test]
+fn the_edges_of_the_square_land_on_the_light() {
+    // u on the square's boundary maps to the polygon's boundary: the extreme azimuths (u₀ = 0
+    // and 1, the tips of the region in the decentral case) and its inner and outer edges.
+    // (Where the light crosses the horizon a tip can lie on it, where the density n·ω / P is 0.)
+    let mut rng = TestRng::new(5);
+    let (mut checked, mut total, mut dropped) = (0, 0, 0);
+    for _ in 0..4000 {
+        let (n, v) = configuration(&mut rng);
+        let t = ProjectedTriangle::new(v[0], v[1], v[2], n);
+        if t.by_solid_angle() || v.iter().any(|x| n.dot(*x) <= 0.0) {
+            continue;
+        }
+        checked += 1;
+        for [x, y] in border() {
+            let (w, pdf) = t.sample(Vec2::new(x, y));
+            assert!(w.is_finite() && pdf.is_finite());
+            total += 1;
+            if pdf == 0.0 {
+                dropped += 1;
+            }
+        }
+    }
+    // Open: next to a tip, the point between the two ellipses can land an ulp-scale distance
+    // outside an edge whose plane passes near the normal (its ellipse's radius is
+    // ill-conditioned there), and is dropped.
+    println!("{dropped} of {total} samples on the square's boundary dropped");
+    assert!(dropped * 400 < total, "{dropped} of {total} dropped");
+    assert!(checked > 1000);
 }

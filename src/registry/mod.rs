@@ -84,6 +84,12 @@ macro_rules! families {
                 (1.0, Vec3::NEG_X),
                 (0.2, TILTED),
             ].map(|(s, n)| warp::CosineRectangle { v: rectangle(s), n });
+            ProjectedTriangle: warp::ProjectedSolidAngleTriangle = [
+                (1.0, Vec3::Z),
+                (1.0, TILTED),
+                (1.0, Vec3::X),
+                (0.2, TILTED),
+            ].map(|(s, n)| warp::ProjectedSolidAngleTriangle { v: triangle(s), n });
             Light: LightSampler = LightSampler::REGISTERED;
             BsdfLambert: BsdfLambert = [BsdfLambert { wo: Vec3::new(0.3, -0.2, 0.933_809) }];
             BsdfPhong: BsdfPhong = [

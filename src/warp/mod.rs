@@ -86,8 +86,8 @@ pub(crate) use phong::phong_lobe_density;
 pub use phong::{PHONG_N_MAX, PhongLobe, phong_lobe, phong_lobe_inverse, phong_lobe_pdf};
 pub(crate) use polygon::{dot_wide, plane_dot, wide_cross};
 pub use projected::{
-    PROJECTED_MAX_SPREAD, PROJECTED_MIN_SR, ProjectedTriangle, projected_triangle,
-    projected_triangle_inverse, projected_triangle_pdf,
+    PROJECTED_MAX_SPREAD, PROJECTED_MIN_SR, ProjectedSolidAngleTriangle, ProjectedTriangle,
+    projected_triangle, projected_triangle_inverse, projected_triangle_pdf,
 };
 pub use solid_angle::{SolidAngleRectangle, SolidAngleTriangle, polygon_size};
 pub use sphere::{UniformSphere, uniform_sphere, uniform_sphere_inverse, uniform_sphere_pdf};

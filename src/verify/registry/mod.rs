@@ -27,6 +27,7 @@ mod disk;
 mod hemisphere;
 mod lights;
 mod phong;
+mod projected;
 mod sphere;
 mod spherical_rectangle;
 mod spherical_triangle;

@@ -270,7 +270,10 @@ fn every_pdf_integrates_to_one() {
     for s in polygons() {
         let cap = match s {
             Sampler::SphericalTriangle(warp::SolidAngleTriangle { v })
-            | Sampler::BilinearTriangle(warp::CosineTriangle { v, .. }) => Cap::around(&v),
+            | Sampler::BilinearTriangle(warp::CosineTriangle { v, .. })
+            | Sampler::ProjectedTriangle(warp::ProjectedSolidAngleTriangle { v, .. }) => {
+                Cap::around(&v)
+            }
             Sampler::SphericalRectangle(warp::SolidAngleRectangle { v: [c, ex, ey] })
             | Sampler::BilinearRectangle(warp::CosineRectangle { v: [c, ex, ey], .. }) => {
                 Cap::around(&[c, c + ex, c + ey, c + ex + ey])

@@ -123,7 +123,9 @@ fn warp_case(s: Sampler) -> Warp {
         domain: domain(s),
         nan_coords: s.nan_coords(),
         fixed: match s {
-            Sampler::SphericalTriangle(_) | Sampler::BilinearTriangle(_) => Some(Vec3::Z),
+            Sampler::SphericalTriangle(_)
+            | Sampler::BilinearTriangle(_)
+            | Sampler::ProjectedTriangle(_) => Some(Vec3::Z),
             Sampler::SphericalRectangle(r) => Some(r.v[0]),
             Sampler::BilinearRectangle(r) => Some(r.v[0]),
             _ => None,

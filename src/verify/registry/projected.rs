@@ -1,0 +1,28 @@
+//! The triangle sampled by projected solid angle, tested on the light's own parameter square.
+
+use glam::{Vec2, Vec3};
+use std::boxed::Box;
+
+use super::{Evidence, Facts, Kind, Param, RoundTrip};
+use crate::verify::PlanarLight;
+use crate::warp::ProjectedSolidAngleTriangle;
+
+/// The geometry varies (the normal stays). u₁, the azimuth's share of the area, is a fraction of
+/// a turn in the central case (0 and 1 meet), and undetermined where u₀ = 0 there (every u₁ maps
+/// to the normal); u₀ is undetermined at the decentral case's tips (u₁ = 0 or 1), where the
+/// region narrows to a vertex.
+impl Evidence for ProjectedSolidAngleTriangle {
+    fn facts(&self) -> Facts {
+        let [a, b, c] = self.v;
+        let n = self.n;
+        let v = Param::Geometry(
+            self.v,
+            Box::new(move |v| ProjectedSolidAngleTriangle { v, n }.into()),
+        );
+        let kind = Kind::Polygon(RoundTrip::azimuth([2e-5, 2e-5]));
+        Facts::new(kind, v, PlanarLight::triangle(a, b, c))
+    }
+    fn determined(&self, u: Vec2, _: Vec3) -> [bool; 2] {
+        [u.y > 1e-2 && u.y < 0.99, u.x > 1e-2]
+    }
+}

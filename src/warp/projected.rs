@@ -159,11 +159,12 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         let frame = Frame::from_normal(n);
         // The geometry in the f64 lane (see `Wide`), the sampling in f32.
         let g = Wide::new(v, normal);
-        let flip = L::narrow_mask(g.flip);
-        let mut rev = v;
+        let mut rev = g.v;
         rev.reverse();
-        let v = zip_map(v, rev, |x, r| V3::select(flip, r, x));
-        let g = Wide::new(v, normal);
+        let g = Wide {
+            v: zip_map(g.v, rev, |x, r| V3::select(g.flip, r, x)),
+            ..g
+        };
         let mut e = [Edge::default(); K];
         let mut sectors = L::ZERO;
         let mut spread = L::ZERO;
@@ -627,7 +628,7 @@ impl<L: Math, const N: usize> Wide<L, N> {
             .zip(self.v)
             .zip(self.v.iter().cycle().skip(1))
         {
-            *o = narrow3(self.edge(a, *b).m);
+            *o = narrow3(unit_wide(cross_in(a, *b)));
         }
         out
     }

@@ -786,11 +786,13 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
     #[inline(always)]
     fn pdf(&self, w: V3<L>) -> L {
         // The cosine in f64, rounded once: within an ε of itself, where the frame's f32
-        // rotation leaves an ε of 1, which near the horizon is far more.
-        let wide = |p: V3<L>| V3::new(p.x.widen(), p.y.widen(), p.z.widen());
-        let n = wide(self.normal);
-        let cos = L::narrow(dot_in(wide(w), n) / dot_in(n, n).sqrt());
-        let inside = self.edges.contains(w) & cos.gt(L::ZERO) & self.valid;
+        // rotation leaves an ε of 1, which near the horizon is far more. Any positive multiple
+        // of a direction is read as the direction (|w| in f64: f32 squares of huge or tiny
+        // coordinates would overflow or vanish).
+        let (w, n) = (widen3(w), widen3(self.normal));
+        let cos = L::narrow(dot_in(w, n) / (dot_in(n, n) * dot_in(w, w)).sqrt());
+        let unit = narrow3::<L>(unit_wide(w));
+        let inside = self.edges.contains(unit) & cos.gt(L::ZERO) & self.valid;
         L::select(inside, cos / self.p, L::ZERO)
     }
 

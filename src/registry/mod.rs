@@ -48,7 +48,9 @@ pub use lights::LightSampler;
 /// (1e-6 sr for both: sampled by area); then the lights seen from the origin (a sphere far, tiny
 /// and around the point, a disk large and small, a triangle and a rectangle large and sampled by
 /// area) and the BSDFs. The bilinear polygons are the spherical polygons' large and small
-/// instances for a receiver's normal ([`TILTED`], and one with a corner below the horizon). The tiny sphere has sin²θmax = 1e-4: smaller ones (down to 1e-12) are
+/// instances for a receiver's normal ([`TILTED`], and one with a corner below the horizon). The
+/// projected triangle is the large one for the normal inside it (+z), [`TILTED`] (decentral) and
+/// +x (across the horizon), and a small one (0.2) for [`TILTED`]. The tiny sphere has sin²θmax = 1e-4: smaller ones (down to 1e-12) are
 /// tested in the scene's tests, where the χ² judge is the f64 pdf; here the f32 pdf's slack of
 /// 2ε in sin θ (a band 5e-5 of this cone's area) stays below what 1e6 samples see.
 macro_rules! families {

@@ -26,7 +26,6 @@
 //! samplers, with their own area fallback), and the pdf is theirs.
 
 use core::fmt;
-use core::marker::PhantomData;
 
 use glam::Vec3;
 
@@ -107,6 +106,8 @@ struct Projected<L: Math, const N: usize, const K: usize> {
     wide_n: V3<L::Wide>,
     /// P ≥ [`PROJECTED_MIN_SR`] and everything finite.
     valid: L::Mask,
+    /// P = 0 for a valid normal: nothing above the horizon, nothing to sample.
+    empty: L::Mask,
 }
 
 /// 2D cross product of the xy parts: exactly 0 for equal vectors (no fused multiply-add).
@@ -206,6 +207,8 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         // of, within half a turn; and the vertices there.
         let (mut lo, mut hi) = (V2::default(), V2::default());
         let mut tips = [V3::default(); 2];
+        let no = L::ZERO.gt(L::ZERO);
+        let (mut found_lo, mut found_hi) = (no, no);
         for x in &e {
             let (mut is_lo, mut is_hi) = (L::ZERO.le(L::ZERO), L::ZERO.le(L::ZERO));
             for y in &e {
@@ -215,13 +218,20 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             }
             lo = V2::select(is_lo, x.da, lo);
             hi = V2::select(is_hi, x.da, hi);
+            found_lo = found_lo | is_lo;
+            found_hi = found_hi | is_hi;
             let [t_lo, t_hi] = tips;
             tips = [V3::select(is_lo, x.a, t_lo), V3::select(is_hi, x.a, t_hi)];
         }
         // The azimuth solve sums the sectors in f32, whose errors, a few ε of each term's
-        // size, reach the sampled u₀ magnified by their cancellation.
+        // size, reach the sampled u₁ magnified by their cancellation.
         let known = spread.le(sectors * L::c(PROJECTED_MAX_SPREAD as f64));
-        let valid = p.ge(L::c(PROJECTED_MIN_SR as f64)) & known & p.is_finite() & n.z.is_finite();
+        // A normal within rounding of an edge's plane, outside it, leaves the extreme azimuths
+        // nearly opposite, and rounding can make neither slot extreme: no azimuth range.
+        let ranged = central | (found_lo & found_hi);
+        let valid =
+            p.ge(L::c(PROJECTED_MIN_SR as f64)) & known & ranged & p.is_finite() & n.z.is_finite();
+        let empty = p.le(L::ZERO) & n.z.is_finite();
         Self {
             frame,
             normal,
@@ -236,6 +246,7 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             // normalisation, each a few ε, on top of the spherical maps' slack.
             edges: EdgePlanes::new(g.planes(), L::ONE, p).widened(L::c(8.0) * L::EPSILON),
             valid,
+            empty,
             wide,
             wide_p,
             wide_n: g.n,
@@ -264,7 +275,7 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
     /// The central case: the sector whose cumulative area brackets `target`, the angle along
     /// its arc from the area (½·t·m̂_z), and the radius from u₁.
     #[inline(always)]
-    fn sample_central(&self, target: L, u1: L) -> V3<L> {
+    fn sample_central(&self, target: L, radius: L) -> V3<L> {
         let mut cum = L::ZERO;
         let mut pick = Edge::default();
         let mut before = L::ZERO;
@@ -282,8 +293,8 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         let w = pick.a.scale(c) + pick.m.cross(pick.a).scale(s);
         // The point √u₁ of the way out along it; z² = 1 − u₁(1 − w_z²), as a sum of
         // non-negative terms.
-        let r = u1.sqrt();
-        let z2 = (L::ONE - u1).mul_add(L::ONE, u1 * w.z * w.z);
+        let r = radius.sqrt();
+        let z2 = (L::ONE - radius) + radius * w.z * w.z;
         V3::new(w.x * r, w.y * r, z2.max(L::ZERO).sqrt())
     }
 
@@ -372,7 +383,7 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
     /// which are nearly linear there: one step from a seed at the right distance is exact for
     /// a corner of straight sides.
     #[inline(always)]
-    fn sample_decentral(&self, target: L, share: L, u1: L) -> V3<L> {
+    fn sample_decentral(&self, target: L, share: L, radius: L) -> V3<L> {
         type W<L> = <L as Widen>::Wide;
         let lo = self.lo;
         let lo_perp = V2::new(-lo.y, lo.x);
@@ -436,12 +447,12 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         let (_, ri) = radii(i.m, d);
         let slope = L::HALF * (ro - ri);
         let f = self.swept_wide(d);
-        let target = share.widen() * self.wide_p;
-        let up = target.gt(W::<L>::HALF * self.wide_p);
+        let target_wide = share.widen() * self.wide_p;
+        let up = target_wide.gt(W::<L>::HALF * self.wide_p);
         let g = W::<L>::select(up, self.wide_p - f, f)
             .max(W::<L>::ZERO)
             .sqrt();
-        let root = W::<L>::select(up, self.wide_p - target, target)
+        let root = W::<L>::select(up, self.wide_p - target_wide, target_wide)
             .max(W::<L>::ZERO)
             .sqrt();
         let dg = L::select(L::narrow_mask(up), -slope, slope) / (L::TWO * L::narrow(g));
@@ -453,8 +464,8 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         let (zi, ri) = radii(i.m, d);
         // (1 − u)·a + u·b, sums of non-negative terms: at u → 1 against the horizon (zo = 0)
         // z² is (1 − u)·zi to the rounding of each factor, where zi − u·zi would cancel.
-        let r2 = (L::ONE - u1).mul_add(ri, u1 * ro);
-        let z2 = (L::ONE - u1).mul_add(zi, u1 * zo);
+        let r2 = (L::ONE - radius).mul_add(ri, radius * ro);
+        let z2 = (L::ONE - radius).mul_add(zi, radius * zo);
         let r = r2.max(L::ZERO).sqrt();
         let w = V3::new(d.x * r, d.y * r, z2.max(L::ZERO).sqrt());
         // At the extreme azimuths the two ellipses meet at a vertex; an edge whose plane
@@ -473,24 +484,26 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         // Central: the sector whose azimuth range holds d.
         let mut cum = L::ZERO;
         let mut area = L::ZERO;
-        let mut u1c = L::ZERO;
+        let mut radius_c = L::ZERO;
         for e in &self.e {
             let here =
                 cross2(e.da, d).ge(L::ZERO) & cross2(d, e.db).gt(L::ZERO) & e.area.gt(L::ZERO);
             let part = L::HALF * e.m.z * angle(e.a, arc_point(e.m, d));
             area = L::select(here, cum + part, area);
             let (_, r2) = radii(e.m, d);
-            u1c = L::select(here, rho2 / r2, u1c);
+            radius_c = L::select(here, rho2 / r2, radius_c);
             cum = cum + e.area;
         }
         // Decentral: the area swept up to d, and where the radius lies between the ellipses.
         let (_, o, i) = self.swept(d);
         let (zo, _) = radii(o.m, d);
         let (zi, _) = radii(i.m, d);
-        let u1d = (zi - w.z * w.z) / (zi - zo);
+        // Where no edge pair meets d (a direction off the light), 0 rather than 0/0.
+        let radius_d = (zi - w.z * w.z) / (zi - zo);
+        let radius_d = L::select(radius_d.is_finite(), radius_d, L::ZERO);
         let f = L::narrow(self.swept_wide(d) / self.wide_p);
-        let u0 = L::select(self.central, area / self.sectors, f);
-        V2::new(L::select(self.central, u1c, u1d), u0)
+        let share = L::select(self.central, area / self.sectors, f);
+        V2::new(L::select(self.central, radius_c, radius_d), share)
     }
 }
 
@@ -516,13 +529,13 @@ fn select_edge<L: Math>(m: L::Mask, a: Edge<L>, b: Edge<L>) -> Edge<L> {
 
 /// Element i of a vertex array (0 past its end, which callers never reach).
 #[inline(always)]
-fn first<L: Lane, const N: usize>(v: &[V3<L>; N], i: usize) -> V3<L> {
+fn vertex<L: Lane, const N: usize>(v: &[V3<L>; N], i: usize) -> V3<L> {
     v.get(i).copied().unwrap_or_default()
 }
 
 /// The convex polygon `w` clipped to the half-space of heights `h` ≥ 0, as K = 2N slots: for
-/// each edge, where it enters (or the previous slot again) and its end (or the previous slot
-/// again), by Sutherland–Hodgman. Two passes, so that the first slots repeat the last point
+/// each edge, where it crosses the boundary (or the previous slot again) and its end (or the
+/// previous slot again), by Sutherland–Hodgman. Two passes, so that the first slots repeat the last point
 /// emitted rather than a point outside. Nothing above the horizon leaves every slot at w₀, a
 /// polygon of area 0.
 ///
@@ -530,7 +543,7 @@ fn first<L: Lane, const N: usize>(v: &[V3<L>; N], i: usize) -> V3<L> {
 /// so that the f64 lanes of every width run the same operations.
 #[inline(always)]
 fn clip<T: Lane, const N: usize, const K: usize>(w: [V3<T>; N], h: [T; N]) -> [V3<T>; K] {
-    let mut last = first(&w, 0);
+    let mut last = vertex(&w, 0);
     let mut slots = [V3::default(); K];
     let starts = w.iter().zip(h);
     let ends = starts.clone().cycle().skip(1);
@@ -539,6 +552,10 @@ fn clip<T: Lane, const N: usize, const K: usize>(w: [V3<T>; N], h: [T; N]) -> [V
         for ((s, hs), (e, he)) in starts.clone().zip(ends.clone()) {
             let (s_in, e_in) = (hs.ge(T::ZERO), he.ge(T::ZERO));
             let x = (e.scale(hs) - s.scale(he)).scale(T::ONE.copysign(hs - he));
+            // A vertex on the horizon is its own crossing: h_s·e − h_e·s with h_s = 0 is only a
+            // rounded copy of s, and the edge from s to it an arc of rounding noise whose plane
+            // points anywhere.
+            let x = V3::select(hs.eq(T::ZERO), *s, V3::select(he.eq(T::ZERO), *e, x));
             last = V3::select((s_in & !e_in) | (e_in & !s_in), x, last);
             let enter = last;
             last = V3::select(e_in, *e, last);
@@ -591,7 +608,7 @@ impl<L: Math, const N: usize> Wide<L, N> {
         let v = v.map(widen3);
         let n = widen3(n);
         let n = n.scale(<L::Wide as Lane>::ONE / dot_in(n, n).sqrt());
-        let det = dot_in(first(&v, 0), cross_in(first(&v, 1), first(&v, 2)));
+        let det = dot_in(vertex(&v, 0), cross_in(vertex(&v, 1), vertex(&v, 2)));
         Self {
             v,
             n,
@@ -604,8 +621,12 @@ impl<L: Math, const N: usize> Wide<L, N> {
     fn edge(&self, a: V3<L::Wide>, b: V3<L::Wide>) -> WideEdge<L::Wide> {
         type W<L> = <L as Widen>::Wide;
         let m = cross_in(a, b);
-        let len = dot_in(m, m).sqrt();
-        let some = len.gt(W::<L>::ZERO);
+        let len2 = dot_in(m, m);
+        let len = len2.sqrt();
+        // An edge shorter than the rounding of its ends' cross product (16 f64 ε of |a||b|) has
+        // no plane: it sweeps nothing.
+        let noise = W::<L>::c(256.0) * W::<L>::EPSILON * W::<L>::EPSILON;
+        let some = len2.gt(noise * dot_in(a, a) * dot_in(b, b));
         let m = V3::select(some, m.scale(W::<L>::ONE / len), V3::default());
         let theta = angle_in(len, dot_in(a, b));
         let mz = dot_in(m, self.n);
@@ -694,7 +715,6 @@ fn angle_in<T: Lane>(s: T, c: T) -> T {
 pub struct ProjectedTriangle<P: Point3> {
     core: Projected<P::Lane, 3, 6>,
     base: SphericalTriangle<P>,
-    width: PhantomData<P>,
 }
 
 impl<P: Point3<Lane = L>, L: Math> ProjectedTriangle<P> {
@@ -705,19 +725,21 @@ impl<P: Point3<Lane = L>, L: Math> ProjectedTriangle<P> {
         Self {
             core: Projected::new([a, b, c].map(Point3::to_lanes), n.to_lanes()),
             base: SphericalTriangle::new(a, b, c),
-            width: PhantomData,
         }
     }
 
     /// P, the projected solid angle of the part of the triangle above the receiver's horizon:
-    /// its irradiance at radiance 1.
+    /// its irradiance at radiance 1 (0 for a triangle wholly below it, NaN for vertices that
+    /// are not finite).
     #[inline]
     pub fn projected_area(&self) -> L {
         self.core.p
     }
 
     /// True (lane by lane) where the triangle is sampled by solid angle instead: P below
-    /// [`PROJECTED_MIN_SR`], or a normal that is not finite.
+    /// [`PROJECTED_MIN_SR`] (but above 0), sweeps cancelling by more than
+    /// [`PROJECTED_MAX_SPREAD`], a normal within rounding of an edge's plane that leaves no
+    /// azimuth range, vertices or a normal that are not finite.
     #[inline]
     pub fn by_solid_angle(&self) -> L::Mask {
         !self.core.valid
@@ -740,7 +762,7 @@ impl<P: Point3<Lane = L>, L: Math> ProjectedTriangle<P> {
             w = V3::select(c.valid, w, wb.to_lanes());
             pdf = L::select(c.valid, pdf, pb);
         }
-        let pdf = L::select(u.any_nan(), L::ZERO, pdf);
+        let pdf = L::select(u.any_nan() | c.empty, L::ZERO, pdf);
         let w = V3::select(pdf.gt(L::ZERO), w, V3::new(L::ZERO, L::ZERO, L::ONE));
         (P::from_lanes(w), pdf)
     }
@@ -759,7 +781,7 @@ impl<P: Point3<Lane = L>, L: Math> ProjectedTriangle<P> {
         } else {
             L::ZERO
         };
-        L::select(c.valid, own, base)
+        L::select(c.valid, own, L::select(c.empty, L::ZERO, base))
     }
 
     /// See [`projected_triangle_inverse`].
@@ -811,13 +833,13 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
 /// angle, [`ProjectedTriangle::projected_area`]). [`projected_triangle_pdf`] gives the same
 /// number, bit for bit, at the returned direction.
 ///
-/// Peters' map (2021): exact in the central case, a solve of f32
-/// accuracy in the decentral one. Below [`PROJECTED_MIN_SR`] (a light that small or that far
-/// below the horizon), and for a normal that is not finite, it is
-/// [`spherical_triangle`](crate::warp::spherical_triangle) instead, with that pdf.
+/// Peters' map (2021): exact in the central case, a solve ending in a step on f64 sums in the
+/// decentral one. Where [`ProjectedTriangle::by_solid_angle`] (below [`PROJECTED_MIN_SR`], a
+/// normal that is not finite, …) it is [`spherical_triangle`](crate::warp::spherical_triangle)
+/// instead, with that pdf.
 ///
-/// u is clamped to [0, 1]². A triangle wholly below the horizon, degenerate geometry and NaN in
-/// u give pdf 0 and direction +z.
+/// u is clamped to [0, 1]². A triangle wholly below the horizon (P = 0) gives pdf 0 and
+/// direction +z for every u; degenerate geometry and NaN in u give the same.
 #[inline]
 pub fn projected_triangle<P: Point2<Lane = L>, L: Math>(
     u: P,
@@ -829,8 +851,10 @@ pub fn projected_triangle<P: Point2<Lane = L>, L: Math>(
     ProjectedTriangle::new(a, b, c, n).sample(u)
 }
 
-/// pdf per steradian that [`projected_triangle`] returns direction `w` (unit): n·ω / P inside
-/// the triangle and above the horizon, else 0 (also for NaN).
+/// pdf per steradian that [`projected_triangle`] returns direction `w` (any positive multiple):
+/// n·ω / P inside the triangle and above the horizon, else 0 (also for NaN, and everywhere for
+/// a triangle wholly below the horizon); the spherical triangle's pdf where the triangle is
+/// sampled by solid angle.
 #[inline]
 pub fn projected_triangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P, c: P, n: P) -> L {
     ProjectedTriangle::new(a, b, c, n).pdf(w)

@@ -252,3 +252,46 @@ fn the_edges_of_the_square_land_on_the_light() {
     assert!(dropped * 400 < total, "{dropped} of {total} dropped");
     assert!(checked > 1000);
 }
+
+#[test]
+fn a_vertex_exactly_on_the_horizon_is_its_own_crossing() {
+    // The normal +y inside the triangle, one vertex at height exactly 0 and another below:
+    // the crossing of the edge from the vertex on the horizon is that vertex itself, not a
+    // rounded copy whose arc of rounding noise would class the light as decentral.
+    let n = Vec3::Y;
+    let mut rng = TestRng::new(9);
+    for _ in 0..1000 {
+        let x = 0.5 + rng.u01();
+        let v = [
+            Vec3::new(x, 0.0, 0.1 * (rng.u01() - 0.5)),
+            Vec3::new(-1.0, 1.0 + rng.u01(), 1.0),
+            Vec3::new(-1.0, 1.0 - 2.5 * rng.u01(), -1.0),
+        ];
+        let t = ProjectedTriangle::new(v[0], v[1], v[2], n);
+        let want = irradiance(n, v);
+        assert!(!t.by_solid_angle(), "{v:?}");
+        assert!(
+            (t.projected_area() as f64 - want).abs() < 1e-6 * want,
+            "{v:?}"
+        );
+        for _ in 0..8 {
+            let (w, pdf) = t.sample(Vec2::new(rng.u01(), rng.u01()));
+            assert!(pdf > 0.0, "{v:?}: a sample dropped");
+            let est = n.as_dvec3().dot(w.as_dvec3()) / pdf as f64;
+            assert!((est - want).abs() < 1e-5 * want, "{v:?}: {est} vs {want}");
+        }
+    }
+}
+
+#[test]
+fn a_triangle_below_the_horizon_is_empty() {
+    let v = [
+        Vec3::new(-1.0, 0.2, -1.0),
+        Vec3::new(1.0, 0.2, -1.0),
+        Vec3::new(0.0, 1.0, -0.5),
+    ];
+    let t = ProjectedTriangle::new(v[0], v[1], v[2], Vec3::Z);
+    assert_eq!(t.projected_area(), 0.0);
+    assert_eq!(t.sample(Vec2::new(0.3, 0.6)), (Vec3::Z, 0.0));
+    assert_eq!(t.pdf((v[0] + v[1] + v[2]).normalize()), 0.0);
+}

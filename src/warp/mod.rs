@@ -2,7 +2,8 @@
 //! its inverse, side by side in the file of its family (`disk`, `hemisphere`, `sphere`, `cone`,
 //! `phong`, `triangle`, `spherical_triangle`, `spherical_rectangle`, `tent`), the bilinear
 //! warp composed with the spherical polygons (`bilinear`), and triangles sampled by projected
-//! solid angle for a receiver's normal (`projected`: [`projected_triangle`]).
+//! solid angle for a receiver's normal (`projected`: [`projected_triangle`],
+//! [`projected_rectangle`]).
 //!
 //! # One function, every width
 //!
@@ -86,8 +87,10 @@ pub(crate) use phong::phong_lobe_density;
 pub use phong::{PHONG_N_MAX, PhongLobe, phong_lobe, phong_lobe_inverse, phong_lobe_pdf};
 pub(crate) use polygon::{dot_wide, plane_dot, wide_cross};
 pub use projected::{
-    PROJECTED_MAX_SPREAD, PROJECTED_MIN_SR, ProjectedSolidAngleTriangle, ProjectedTriangle,
-    projected_triangle, projected_triangle_inverse, projected_triangle_pdf,
+    PROJECTED_MAX_SPREAD, PROJECTED_MIN_SR, ProjectedRectangle, ProjectedSolidAngleRectangle,
+    ProjectedSolidAngleTriangle, ProjectedTriangle, projected_rectangle,
+    projected_rectangle_inverse, projected_rectangle_pdf, projected_triangle,
+    projected_triangle_inverse, projected_triangle_pdf,
 };
 pub use solid_angle::{SolidAngleRectangle, SolidAngleTriangle, polygon_size};
 pub use sphere::{UniformSphere, uniform_sphere, uniform_sphere_inverse, uniform_sphere_pdf};

@@ -36,7 +36,7 @@ use crate::point::{Point2, Point3};
 use crate::warp::common::clamp_u;
 use crate::warp::family::{is_unit, lanes3};
 use crate::warp::polygon::EdgePlanes;
-use crate::warp::{Family, SphericalTriangle};
+use crate::warp::{Family, SphericalRectangle, SphericalTriangle};
 
 /// The projected solid angle (irradiance at radiance 1, in units of sr) below which a polygon is
 /// sampled by solid angle rather than by projected solid angle.
@@ -149,10 +149,10 @@ fn radii<L: Math>(m: V3<L>, d: V2<L>) -> (L, L) {
 }
 
 impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
-    /// The polygon `v` (directions from the shading point, in world space, convex, either
-    /// winding) as seen by a receiver with unit normal `n`.
+    /// The polygon `v` (directions from the shading point, in world space, in f64, convex,
+    /// either winding) as seen by a receiver with unit normal `n`.
     #[inline(always)]
-    fn new(v: [V3<L>; N], n: V3<L>) -> Self {
+    fn new(v: [V3<L::Wide>; N], n: V3<L>) -> Self {
         // Normalised here: a frame from a normal an ulp off unit is that far from orthonormal,
         // and the pdf's round trip through it that far off.
         let normal = n;
@@ -604,8 +604,7 @@ struct WideEdge<T> {
 
 impl<L: Math, const N: usize> Wide<L, N> {
     #[inline(always)]
-    fn new(v: [V3<L>; N], n: V3<L>) -> Self {
-        let v = v.map(widen3);
+    fn new(v: [V3<L::Wide>; N], n: V3<L>) -> Self {
         let n = widen3(n);
         let n = n.scale(<L::Wide as Lane>::ONE / dot_in(n, n).sqrt());
         let det = dot_in(vertex(&v, 0), cross_in(vertex(&v, 1), vertex(&v, 2)));
@@ -709,45 +708,65 @@ fn angle_in<T: Lane>(s: T, c: T) -> T {
     T::select(r.gt(T::ZERO), theta, T::ZERO)
 }
 
-/// A triangle sampled by projected solid angle for a receiver with unit normal `n`: see
-/// [`projected_triangle`]. The set-up (clipping, P, the frame) is paid once.
-#[derive(Clone, Copy)]
-pub struct ProjectedTriangle<P: Point3> {
-    core: Projected<P::Lane, 3, 6>,
-    base: SphericalTriangle<P>,
+/// The solid-angle sampler a projected polygon falls back to, as a map to directions.
+trait SolidAngle<P: Point3>: Copy {
+    fn sample(&self, u: P::Vec2) -> (P, P::Lane);
+    fn pdf(&self, w: P) -> P::Lane;
+    fn inverse(&self, w: P) -> P::Vec2;
 }
 
-impl<P: Point3<Lane = L>, L: Math> ProjectedTriangle<P> {
-    /// The triangle with vertices `a`, `b`, `c` relative to the shading point, in either
-    /// winding, seen by a receiver with unit normal `n`.
-    #[inline]
-    pub fn new(a: P, b: P, c: P, n: P) -> Self {
-        Self {
-            core: Projected::new([a, b, c].map(Point3::to_lanes), n.to_lanes()),
-            base: SphericalTriangle::new(a, b, c),
-        }
+impl<P: Point3> SolidAngle<P> for SphericalTriangle<P> {
+    #[inline(always)]
+    fn sample(&self, u: P::Vec2) -> (P, P::Lane) {
+        SphericalTriangle::sample(self, u)
     }
-
-    /// P, the projected solid angle of the part of the triangle above the receiver's horizon:
-    /// its irradiance at radiance 1 (0 for a triangle wholly below it, NaN for vertices that
-    /// are not finite).
-    #[inline]
-    pub fn projected_area(&self) -> L {
-        self.core.p
+    #[inline(always)]
+    fn pdf(&self, w: P) -> P::Lane {
+        SphericalTriangle::pdf(self, w)
     }
-
-    /// True (lane by lane) where the triangle is sampled by solid angle instead: P below
-    /// [`PROJECTED_MIN_SR`] (but above 0), sweeps cancelling by more than
-    /// [`PROJECTED_MAX_SPREAD`], a normal within rounding of an edge's plane that leaves no
-    /// azimuth range, vertices or a normal that are not finite.
-    #[inline]
-    pub fn by_solid_angle(&self) -> L::Mask {
-        !self.core.valid
+    #[inline(always)]
+    fn inverse(&self, w: P) -> P::Vec2 {
+        SphericalTriangle::inverse(self, w)
     }
+}
 
-    /// See [`projected_triangle`].
-    #[inline]
-    pub fn sample(&self, u: P::Vec2) -> (P, L) {
+/// The rectangle's points as their directions, with the pdf at the direction (the rounding of
+/// the normalisation can move it across the inside test, or the area pdf's last bit); its
+/// inverse takes the point of the light along a direction.
+impl<P: Point3> SolidAngle<P> for SphericalRectangle<P> {
+    #[inline(always)]
+    fn sample(&self, u: P::Vec2) -> (P, P::Lane) {
+        let (p, kept) = SphericalRectangle::sample(self, u);
+        let w = P::from_lanes(p.to_lanes().normalize());
+        let pdf = SphericalRectangle::pdf(self, w);
+        (
+            w,
+            P::Lane::select(kept.gt(P::Lane::ZERO), pdf, P::Lane::ZERO),
+        )
+    }
+    #[inline(always)]
+    fn pdf(&self, w: P) -> P::Lane {
+        SphericalRectangle::pdf(self, w)
+    }
+    #[inline(always)]
+    fn inverse(&self, w: P) -> P::Vec2 {
+        SphericalRectangle::inverse(self, P::from_lanes(self.on_plane(w.to_lanes())))
+    }
+}
+
+/// A convex polygon of N vertices sampled by projected solid angle, with the spherical sampler
+/// `B` where it falls back: the body of [`ProjectedTriangle`] and [`ProjectedRectangle`].
+#[derive(Clone, Copy)]
+struct Sampler<P: Point3, B, const N: usize, const K: usize> {
+    core: Projected<P::Lane, N, K>,
+    base: B,
+}
+
+impl<P: Point3<Lane = L>, L: Math, B: SolidAngle<P>, const N: usize, const K: usize>
+    Sampler<P, B, N, K>
+{
+    #[inline(always)]
+    fn sample(&self, u: P::Vec2) -> (P, L) {
         let u = u.to_lanes();
         let c = &self.core;
         let (mut w, mut pdf) = (V3::default(), L::ZERO);
@@ -767,9 +786,8 @@ impl<P: Point3<Lane = L>, L: Math> ProjectedTriangle<P> {
         (P::from_lanes(w), pdf)
     }
 
-    /// See [`projected_triangle_pdf`].
-    #[inline]
-    pub fn pdf(&self, w: P) -> L {
+    #[inline(always)]
+    fn pdf(&self, w: P) -> L {
         let c = &self.core;
         let own = if c.valid.any() {
             c.pdf(w.to_lanes())
@@ -784,9 +802,8 @@ impl<P: Point3<Lane = L>, L: Math> ProjectedTriangle<P> {
         L::select(c.valid, own, L::select(c.empty, L::ZERO, base))
     }
 
-    /// See [`projected_triangle_inverse`].
-    #[inline]
-    pub fn inverse(&self, w: P) -> P::Vec2 {
+    #[inline(always)]
+    fn inverse(&self, w: P) -> P::Vec2 {
         let c = &self.core;
         let w = w.to_lanes();
         let own = if c.valid.any() {
@@ -801,6 +818,101 @@ impl<P: Point3<Lane = L>, L: Math> ProjectedTriangle<P> {
         };
         P::Vec2::from_lanes(V2::select(c.valid, own, base))
     }
+}
+
+/// The methods every projected polygon shares, documented once.
+macro_rules! projected_methods {
+    ($sample:ident, $pdf:ident, $inverse:ident) => {
+        /// P, the projected solid angle of the part of the polygon above the receiver's
+        /// horizon: its irradiance at radiance 1 (0 for a polygon wholly below it, NaN for
+        /// vertices that are not finite).
+        #[inline]
+        pub fn projected_area(&self) -> L {
+            self.0.core.p
+        }
+
+        /// True (lane by lane) where the polygon is sampled by solid angle instead: P below
+        /// [`PROJECTED_MIN_SR`] (but above 0), sweeps cancelling by more than
+        /// [`PROJECTED_MAX_SPREAD`], a normal within rounding of an edge's plane that leaves
+        /// no azimuth range, vertices or a normal that are not finite.
+        #[inline]
+        pub fn by_solid_angle(&self) -> L::Mask {
+            !self.0.core.valid
+        }
+
+        /// True (lane by lane) where the receiver's normal lies inside the clipped polygon
+        /// (Peters' central case, sampled in closed form).
+        #[inline]
+        pub fn central(&self) -> L::Mask {
+            self.0.core.central
+        }
+
+        #[doc = concat!("See [`", stringify!($sample), "`].")]
+        #[inline]
+        pub fn sample(&self, u: P::Vec2) -> (P, L) {
+            self.0.sample(u)
+        }
+
+        #[doc = concat!("See [`", stringify!($pdf), "`].")]
+        #[inline]
+        pub fn pdf(&self, w: P) -> L {
+            self.0.pdf(w)
+        }
+
+        #[doc = concat!("See [`", stringify!($inverse), "`].")]
+        #[inline]
+        pub fn inverse(&self, w: P) -> P::Vec2 {
+            self.0.inverse(w)
+        }
+    };
+}
+
+/// A triangle sampled by projected solid angle for a receiver with unit normal `n`: see
+/// [`projected_triangle`]. The set-up (clipping, P, the frame) is paid once.
+#[derive(Clone, Copy)]
+pub struct ProjectedTriangle<P: Point3>(Sampler<P, SphericalTriangle<P>, 3, 6>);
+
+impl<P: Point3<Lane = L>, L: Math> ProjectedTriangle<P> {
+    /// The triangle with vertices `a`, `b`, `c` relative to the shading point, in either
+    /// winding, seen by a receiver with unit normal `n`.
+    #[inline]
+    pub fn new(a: P, b: P, c: P, n: P) -> Self {
+        let v = [a, b, c].map(|x| widen3(x.to_lanes()));
+        Self(Sampler {
+            core: Projected::new(v, n.to_lanes()),
+            base: SphericalTriangle::new(a, b, c),
+        })
+    }
+
+    projected_methods!(
+        projected_triangle,
+        projected_triangle_pdf,
+        projected_triangle_inverse
+    );
+}
+
+/// A parallelogram sampled by projected solid angle for a receiver with unit normal `n`: see
+/// [`projected_rectangle`]. The set-up (clipping, P, the frame) is paid once.
+#[derive(Clone, Copy)]
+pub struct ProjectedRectangle<P: Point3>(Sampler<P, SphericalRectangle<P>, 4, 8>);
+
+impl<P: Point3<Lane = L>, L: Math> ProjectedRectangle<P> {
+    /// The parallelogram corner + s·ex + t·ey, s, t ∈ [0, 1], relative to the shading point,
+    /// seen by a receiver with unit normal `n`. Its corners are summed in f64, exactly.
+    #[inline]
+    pub fn new(corner: P, ex: P, ey: P, n: P) -> Self {
+        let [c, x, y] = [corner, ex, ey].map(|p| widen3(p.to_lanes()));
+        Self(Sampler {
+            core: Projected::new([c, c + x, c + x + y, c + y], n.to_lanes()),
+            base: SphericalRectangle::new(corner, ex, ey),
+        })
+    }
+
+    projected_methods!(
+        projected_rectangle,
+        projected_rectangle_pdf,
+        projected_rectangle_inverse
+    );
 }
 
 impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
@@ -882,23 +994,38 @@ pub struct ProjectedSolidAngleTriangle {
     pub n: Vec3,
 }
 
+/// The registry's name for a projected polygon's case: "central" (the normal inside the
+/// polygon), "large" or "small" (decentral, P above or below 0.05), each with " horizon" where
+/// some vertex lies below the receiver's horizon; "solid" where it falls back to solid angle.
+fn case(by_solid_angle: bool, central: bool, p: f32, vertices: &[Vec3], n: Vec3) -> &'static str {
+    let across = vertices.iter().any(|x| n.dot(*x) < 0.0);
+    match (by_solid_angle, central, across) {
+        (true, _, _) => "solid",
+        (false, true, false) => "central",
+        (false, true, true) => "central horizon",
+        (false, false, false) if p > 0.05 => "large",
+        (false, false, true) if p > 0.05 => "large horizon",
+        (false, false, false) => "small",
+        (false, false, true) => "small horizon",
+    }
+}
+
+/// Near the decentral case's tips (u₁ within 1e-2 of 0 or 1) the region is a wedge whose swept
+/// area grows as the square of the azimuth, so the azimuth inherits the square root of the
+/// rounding of the area and of the edges' f32 planes: measured up to 6e-6 rad within 3e-3 of a
+/// tip of the registry's small triangle, 1.2e-6 beyond 1e-2. Error measurements skip those u.
+fn near_a_tip(case: &str, u: glam::Vec2) -> bool {
+    !case.starts_with("central") && (u.y < 1e-2 || u.y > 1.0 - 1e-2)
+}
+
 impl ProjectedSolidAngleTriangle {
-    /// Which case it is: "central" (the normal inside the triangle), "large" or "small"
-    /// (decentral, P above or below 0.05), each with " horizon" where it crosses the
-    /// receiver's horizon; "solid" where it falls back to solid angle.
+    /// Which case it is: "central", "large", "small", with " horizon", or "solid" (see the
+    /// registry's rows).
     pub fn case(&self) -> &'static str {
         let [a, b, c] = self.v;
         let t = ProjectedTriangle::new(a, b, c, self.n);
-        let across = self.v.iter().any(|x| self.n.dot(*x) < 0.0);
-        match (t.by_solid_angle(), t.core.central, across) {
-            (true, _, _) => "solid",
-            (false, true, false) => "central",
-            (false, true, true) => "central horizon",
-            (false, false, false) if t.projected_area() > 0.05 => "large",
-            (false, false, true) if t.projected_area() > 0.05 => "large horizon",
-            (false, false, false) => "small",
-            (false, false, true) => "small horizon",
-        }
+        let p = t.projected_area();
+        case(t.by_solid_angle(), t.central(), p, &self.v, self.n)
     }
 }
 
@@ -926,13 +1053,103 @@ impl Family for ProjectedSolidAngleTriangle {
     fn in_domain(&self, x: Vec3) -> bool {
         is_unit(x)
     }
-    /// Near the decentral case's tips (u₁ within 1e-2 of 0 or 1) the region is a wedge whose
-    /// swept area grows as the square of the azimuth, so the azimuth inherits the square root
-    /// of the rounding of the area and of the edges' f32 planes: measured up to 6e-6 rad
-    /// within 3e-3 of a tip of the registry's small triangle, 1.2e-6 beyond 1e-2. Error
-    /// measurements skip those u.
     fn parameter_sensitive(&self, u: glam::Vec2) -> bool {
-        let central = self.case().starts_with("central");
-        !central && (u.y < 1e-2 || u.y > 1.0 - 1e-2)
+        near_a_tip(self.case(), u)
+    }
+}
+
+/// A direction towards the parallelogram corner + s·ex + t·ey, s, t ∈ [0, 1] (relative to the
+/// shading point), distributed as the cosine n·ω of a receiver with unit normal `n` over the
+/// part of it above the horizon, and its pdf per steradian n·ω / P: the map of
+/// [`projected_triangle`] for four vertices, with the same cases, accuracy and bad input.
+/// Where [`ProjectedRectangle::by_solid_angle`] it is the direction of
+/// [`spherical_rectangle`](crate::warp::spherical_rectangle)'s point, with that pdf.
+///
+/// It returns a direction, not a point of the light (unlike the spherical rectangle): the map
+/// is one of directions, and a caller who needs the point meets the plane along it.
+#[inline]
+pub fn projected_rectangle<P: Point2<Lane = L>, L: Math>(
+    u: P,
+    corner: P::Vec3,
+    ex: P::Vec3,
+    ey: P::Vec3,
+    n: P::Vec3,
+) -> (P::Vec3, L) {
+    ProjectedRectangle::new(corner, ex, ey, n).sample(u)
+}
+
+/// pdf per steradian that [`projected_rectangle`] returns direction `w` (any positive
+/// multiple): n·ω / P inside the parallelogram and above the horizon, else 0 (also for NaN);
+/// the spherical rectangle's pdf where it is sampled by solid angle.
+#[inline]
+pub fn projected_rectangle_pdf<P: Point3<Lane = L>, L: Math>(
+    w: P,
+    corner: P,
+    ex: P,
+    ey: P,
+    n: P,
+) -> L {
+    ProjectedRectangle::new(corner, ex, ey, n).pdf(w)
+}
+
+/// Inverse of [`projected_rectangle`]: the u that maps to direction `w`, clamped to the
+/// square. NaN gives NaN.
+#[inline]
+pub fn projected_rectangle_inverse<P: Point3<Lane = L>, L: Math>(
+    w: P,
+    corner: P,
+    ex: P,
+    ey: P,
+    n: P,
+) -> P::Vec2 {
+    ProjectedRectangle::new(corner, ex, ey, n).inverse(w)
+}
+
+/// The registry's [`projected_rectangle`] towards corner + s·ex + t·ey (`v` is corner, ex, ey)
+/// for the receiver's normal `n`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ProjectedSolidAngleRectangle {
+    /// Corner, ex, ey.
+    pub v: [Vec3; 3],
+    /// The receiver's unit normal.
+    pub n: Vec3,
+}
+
+impl ProjectedSolidAngleRectangle {
+    /// Which case it is, as the triangle's.
+    pub fn case(&self) -> &'static str {
+        let [c, ex, ey] = self.v;
+        let r = ProjectedRectangle::new(c, ex, ey, self.n);
+        let corners = [c, c + ex, c + ex + ey, c + ey];
+        let p = r.projected_area();
+        case(r.by_solid_angle(), r.central(), p, &corners, self.n)
+    }
+}
+
+impl Family for ProjectedSolidAngleRectangle {
+    fn name(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "projected_rectangle {}", self.case())
+    }
+    fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
+        let (v, n) = (self.v.map(lanes3::<L>), lanes3::<L>(self.n));
+        #[inline(always)]
+        move |u| {
+            let ([c, ex, ey], n) = core::hint::black_box((v, n));
+            projected_rectangle(u, c, ex, ey, n)
+        }
+    }
+    fn pdf<L: Math>(&self, x: V3<L>) -> L {
+        let [c, ex, ey] = self.v.map(lanes3::<L>);
+        projected_rectangle_pdf(x, c, ex, ey, lanes3(self.n))
+    }
+    fn inverse<L: Math>(&self, x: V3<L>) -> Option<V2<L>> {
+        let [c, ex, ey] = self.v.map(lanes3::<L>);
+        Some(projected_rectangle_inverse(x, c, ex, ey, lanes3(self.n)))
+    }
+    fn in_domain(&self, x: Vec3) -> bool {
+        is_unit(x)
+    }
+    fn parameter_sensitive(&self, u: glam::Vec2) -> bool {
+        near_a_tip(self.case(), u)
     }
 }

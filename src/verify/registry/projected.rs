@@ -1,11 +1,11 @@
-//! The triangle sampled by projected solid angle, tested on the light's own parameter square.
+//! The polygons sampled by projected solid angle, tested on the light's own parameter square.
 
 use glam::{Vec2, Vec3};
 use std::boxed::Box;
 
 use super::{Evidence, Facts, Kind, Param, RoundTrip};
 use crate::verify::PlanarLight;
-use crate::warp::ProjectedSolidAngleTriangle;
+use crate::warp::{ProjectedSolidAngleRectangle, ProjectedSolidAngleTriangle};
 
 /// The geometry varies (the normal stays). u₁, the azimuth's share of the area, is a fraction of
 /// a turn in the central case (0 and 1 meet), and undetermined where u₀ = 0 there (every u₁ maps
@@ -21,6 +21,22 @@ impl Evidence for ProjectedSolidAngleTriangle {
         );
         let kind = Kind::Polygon(RoundTrip::azimuth([2e-5, 2e-5]));
         Facts::new(kind, v, PlanarLight::triangle(a, b, c))
+    }
+    fn determined(&self, u: Vec2, _: Vec3) -> [bool; 2] {
+        [u.y > 1e-2 && u.y < 0.99, u.x > 1e-2]
+    }
+}
+
+/// As the triangle's, on the parallelogram's square.
+impl Evidence for ProjectedSolidAngleRectangle {
+    fn facts(&self) -> Facts {
+        let light = PlanarLight::parallelogram(self.v[0], self.v[1], self.v[2]);
+        let n = self.n;
+        let v = Param::Geometry(
+            self.v,
+            Box::new(move |v| ProjectedSolidAngleRectangle { v, n }.into()),
+        );
+        Facts::new(Kind::Polygon(RoundTrip::azimuth([2e-5, 2e-5])), v, light)
     }
     fn determined(&self, u: Vec2, _: Vec3) -> [bool; 2] {
         [u.y > 1e-2 && u.y < 0.99, u.x > 1e-2]

@@ -275,9 +275,11 @@ fn every_pdf_integrates_to_one() {
                 Cap::around(&v)
             }
             Sampler::SphericalRectangle(warp::SolidAngleRectangle { v: [c, ex, ey] })
-            | Sampler::BilinearRectangle(warp::CosineRectangle { v: [c, ex, ey], .. }) => {
-                Cap::around(&[c, c + ex, c + ey, c + ex + ey])
-            }
+            | Sampler::BilinearRectangle(warp::CosineRectangle { v: [c, ex, ey], .. })
+            | Sampler::ProjectedRectangle(warp::ProjectedSolidAngleRectangle {
+                v: [c, ex, ey],
+                ..
+            }) => Cap::around(&[c, c + ex, c + ey, c + ex + ey]),
             _ => unreachable!(),
         };
         cases.push((s.name(), integrate(cap, |w| s.pdf(w), 3000), 3e-3));

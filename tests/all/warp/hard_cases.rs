@@ -125,7 +125,8 @@ fn warp_case(s: Sampler) -> Warp {
         fixed: match s {
             Sampler::SphericalTriangle(_)
             | Sampler::BilinearTriangle(_)
-            | Sampler::ProjectedTriangle(_) => Some(Vec3::Z),
+            | Sampler::ProjectedTriangle(_)
+            | Sampler::ProjectedRectangle(_) => Some(Vec3::Z),
             Sampler::SphericalRectangle(r) => Some(r.v[0]),
             Sampler::BilinearRectangle(r) => Some(r.v[0]),
             _ => None,

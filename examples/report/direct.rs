@@ -42,13 +42,19 @@ pub struct DirectRow {
     pub efficiency: f64,
     /// Efficiency over the best single strategy's of the same scene.
     pub vs_best_single: f64,
+    /// Efficiency over the same strategy's on the same scene with lights sampled by solid
+    /// angle.
+    pub vs_solid_angle: f64,
 }
 
 impl DirectRow {
     /// (mean − reference)/stderr; `None` where every estimate was equal (no sample reached the
-    /// light, so the standard error is 0 and says nothing).
+    /// light, so the standard error is 0 and says nothing), or where the mean is the reference
+    /// to the f32 estimates' rounding (1e-6): a zero-variance estimator's (projected light
+    /// sampling of a Lambertian receiver) standard error is that rounding, not a spread.
     pub fn bias_sigma(&self) -> Option<f64> {
-        (self.run.stderr > 0.0).then(|| self.run.bias_sigma(self.reference))
+        let exact = (self.run.mean - self.reference).abs() <= 1e-6 * self.reference.abs();
+        (self.run.stderr > 0.0 && !exact).then(|| self.run.bias_sigma(self.reference))
     }
 }
 
@@ -145,7 +151,7 @@ fn x16_vs_x8(scene: &DirectScene, strategy: Strategy, config: DirectConfig, coun
     med(&mut a) / med(&mut b)
 }
 
-/// The light-sampling modes that change `scene`: both for scenes with a triangle or rectangle
+/// The light-sampling modes that change `scene`: all for scenes with a triangle or rectangle
 /// light, solid angle alone for the others (the sphere and the disk have no other mode yet).
 fn modes(scene: &DirectScene) -> &'static [LightSampling] {
     let polygon = |l: &Light| matches!(l.shape, AnyShape::Triangle(_) | AnyShape::Rectangle(_));
@@ -191,6 +197,7 @@ pub fn direct(cfg: &Config) -> Vec<DirectRow> {
                 scalar_ns: scalar,
                 x16_vs_x8: x16,
                 vs_best_single: 0.0,
+                vs_solid_angle: 0.0,
             });
         }
         let best = rows[first..]
@@ -199,8 +206,15 @@ pub fn direct(cfg: &Config) -> Vec<DirectRow> {
             .map(|r| r.efficiency)
             .filter(|e| e.is_finite())
             .fold(0.0, f64::max);
+        let plain: Vec<(&'static str, f64)> = rows[first..]
+            .iter()
+            .filter(|r| r.light_sampling == LightSampling::SolidAngle.name())
+            .map(|r| (r.strategy, r.efficiency))
+            .collect();
         for r in &mut rows[first..] {
             r.vs_best_single = r.efficiency / best;
+            let same = plain.iter().find(|(s, _)| *s == r.strategy);
+            r.vs_solid_angle = same.map_or(f64::NAN, |(_, e)| r.efficiency / e);
         }
     }
     rows

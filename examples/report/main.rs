@@ -23,6 +23,7 @@ use std::time::Instant;
 
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use mcsample::lane::{V2, V3};
+use mcsample::scene::{AnyShape, LightSampling};
 use mcsample::verify::registry::{self, Sampler};
 use mcsample::warp::{
     self, SolidAngleRectangle, SolidAngleTriangle, SphericalRectangle, SphericalTriangle,
@@ -59,9 +60,18 @@ struct Row {
     plain_max_abs_err: Option<f64>,
     max_pdf_rel_err: f64,
     chi2_p: f64,
-    /// A light's first sample at a new shading point (set-up included) and each further sample
-    /// of the prepared light, scalar ns, timed as one interleaved pair.
-    first_further_ns: Option<(f64, f64)>,
+}
+
+/// A light of the registry prepared at a shading point in one light-sampling mode: its first
+/// sample at a new point (set-up included) and each further sample of the prepared light, scalar
+/// ns, timed as one interleaved pair.
+pub struct PreparedRow {
+    name: String,
+    mode: &'static str,
+    first_ns: f64,
+    further_ns: f64,
+    /// further_ns over the same light's further sample by solid angle (its own run).
+    further_vs_solid_angle: f64,
 }
 
 fn uniform_points(n: usize, seed: u64) -> Vec<Vec2> {
@@ -277,25 +287,6 @@ fn measure(
         let (a, b) = time_pair(cfg, pts, pts, &ours, &*plain);
         a / b
     });
-    let first_further_ns = s.scene_light().map(|light| {
-        let p = Vec3::ZERO;
-        let prepared = light.at(p);
-        time_pair(
-            cfg,
-            pts,
-            pts,
-            &|us: &[Vec2], out: &mut [Vec3]| {
-                for (o, &u) in out.iter_mut().zip(us) {
-                    *o = light.at(black_box(p)).sample(u).wi;
-                }
-            },
-            &|us: &[Vec2], out: &mut [Vec3]| {
-                for (o, &u) in out.iter_mut().zip(us) {
-                    *o = prepared.sample(u).wi;
-                }
-            },
-        )
-    });
     Row {
         name: s.name(),
         scalar_ns,
@@ -309,13 +300,60 @@ fn measure(
         plain_max_abs_err: acc.plain_max_abs_err,
         max_pdf_rel_err: acc.max_pdf_rel_err,
         chi2_p: acc.chi2_p,
-        first_further_ns,
     }
 }
 
 /// Where spherical sampling breaks down: f32 Arvo and Ureña maps (no fallback) against their f64
 /// instances, for lights from 1e-8 sr to nearly a hemisphere. The error is the worst direction
 /// error over the light's angular size √Ω: a sample displaced by that fraction of the light.
+/// Every light of the registry prepared at the origin for a receiver with normal
+/// [`TILTED`](mcsample::registry::TILTED), in every light-sampling mode its shape offers.
+fn prepared(cfg: &Config, samplers: &[Sampler], pts: &[Vec2]) -> Vec<PreparedRow> {
+    let (p, n) = (Vec3::ZERO, mcsample::registry::TILTED);
+    let mut rows = Vec::new();
+    for s in samplers {
+        let Some(light) = s.scene_light() else {
+            continue;
+        };
+        let polygon = matches!(light.shape, AnyShape::Triangle(_) | AnyShape::Rectangle(_));
+        let modes: &[LightSampling] = if polygon {
+            &LightSampling::ALL
+        } else {
+            &[LightSampling::SolidAngle]
+        };
+        let mut plain = f64::NAN;
+        for &mode in modes {
+            let prepared = light.at_sampling(p, n, mode);
+            let (first, further) = time_pair(
+                cfg,
+                pts,
+                pts,
+                &|us: &[Vec2], out: &mut [Vec3]| {
+                    for (o, &u) in out.iter_mut().zip(us) {
+                        *o = light.at_sampling(black_box(p), n, mode).sample(u).wi;
+                    }
+                },
+                &|us: &[Vec2], out: &mut [Vec3]| {
+                    for (o, &u) in out.iter_mut().zip(us) {
+                        *o = prepared.sample(u).wi;
+                    }
+                },
+            );
+            if mode == LightSampling::SolidAngle {
+                plain = further;
+            }
+            rows.push(PreparedRow {
+                name: s.name(),
+                mode: mode.name(),
+                first_ns: first,
+                further_ns: further,
+                further_vs_solid_angle: further / plain,
+            });
+        }
+    }
+    rows
+}
+
 fn stability(quick: bool) -> Vec<(String, f64, f64, f64)> {
     let pts = uniform_points(if quick { 1024 } else { 16384 }, 21);
     let mut rows = Vec::new();
@@ -487,12 +525,13 @@ fn main() {
     let samplers: Vec<Sampler> = registry::registry().into_iter().collect();
     let accuracies = on_all_cores(&samplers, |&s| accuracy(&cfg, s, &err_pts));
     let rows: Vec<Row> = samplers
-        .into_iter()
+        .iter()
         .zip(accuracies)
-        .map(|(s, acc)| measure(&cfg, s, &pts, (&packets, &packets16), acc))
+        .map(|(&s, acc)| measure(&cfg, s, &pts, (&packets, &packets16), acc))
         .collect();
     show(table::warps(&cfg, &rows));
-    show(table::prepared(&rows));
+    let prepared_rows = prepared(&cfg, &samplers, &pts);
+    show(table::prepared(&prepared_rows));
     let stab = stability(cfg.quick);
     show(table::stability(&stab));
     let seqs = sequences::sequences(cfg.quick);
@@ -546,7 +585,7 @@ fn main() {
                 "warps",
                 rows.iter()
                     .map(|r| format!(
-                        "{{\"name\": \"{}\", \"scalar_ns\": {}, \"scalar_vs_plain\": {}, \"x8_ns\": {}, \"x16_ns\": {}, \"x16_vs_x8\": {}, \"speedup\": {}, \"max_abs_err\": {}, \"plain_max_abs_err\": {}, \"max_pdf_rel_err\": {}, \"chi2_p\": {}, \"first_ns\": {}, \"further_ns\": {}}}",
+                        "{{\"name\": \"{}\", \"scalar_ns\": {}, \"scalar_vs_plain\": {}, \"x8_ns\": {}, \"x16_ns\": {}, \"x16_vs_x8\": {}, \"speedup\": {}, \"max_abs_err\": {}, \"plain_max_abs_err\": {}, \"max_pdf_rel_err\": {}, \"chi2_p\": {}}}",
                         esc(&r.name),
                         num(r.scalar_ns),
                         num(r.scalar_vs_plain.unwrap_or(f64::NAN)),
@@ -557,9 +596,21 @@ fn main() {
                         num(r.max_abs_err),
                         num(r.plain_max_abs_err.unwrap_or(f64::NAN)),
                         num(r.max_pdf_rel_err),
-                        num(r.chi2_p),
-                        num(r.first_further_ns.map_or(f64::NAN, |t| t.0)),
-                        num(r.first_further_ns.map_or(f64::NAN, |t| t.1))
+                        num(r.chi2_p)
+                    ))
+                    .collect(),
+            ),
+            array(
+                "prepared",
+                prepared_rows
+                    .iter()
+                    .map(|r| format!(
+                        "{{\"name\": \"{}\", \"light_sampling\": \"{}\", \"first_ns\": {}, \"further_ns\": {}, \"further_vs_solid_angle\": {}}}",
+                        esc(&r.name),
+                        r.mode,
+                        num(r.first_ns),
+                        num(r.further_ns),
+                        num(r.further_vs_solid_angle)
                     ))
                     .collect(),
             ),
@@ -608,7 +659,7 @@ fn main() {
                 direct_rows
                     .iter()
                     .map(|r| format!(
-                        "{{\"scene\": \"{}\", \"strategy\": \"{}\", \"light_sampling\": \"{}\", \"reference\": {}, \"mean\": {}, \"stderr\": {}, \"bias_sigma\": {}, \"rel_rmse\": {}, \"ns_per_estimate\": {}, \"scalar_ns_per_estimate\": {}, \"x16_vs_x8\": {}, \"visibility_calls\": {}, \"efficiency\": {}, \"efficiency_vs_best_single\": {}, \"estimates\": {}, \"samples_per_estimate\": {}}}",
+                        "{{\"scene\": \"{}\", \"strategy\": \"{}\", \"light_sampling\": \"{}\", \"reference\": {}, \"mean\": {}, \"stderr\": {}, \"bias_sigma\": {}, \"rel_rmse\": {}, \"ns_per_estimate\": {}, \"scalar_ns_per_estimate\": {}, \"x16_vs_x8\": {}, \"visibility_calls\": {}, \"efficiency\": {}, \"efficiency_vs_best_single\": {}, \"efficiency_vs_solid_angle\": {}, \"estimates\": {}, \"samples_per_estimate\": {}}}",
                         esc(&r.scene),
                         r.strategy,
                         r.light_sampling,
@@ -623,6 +674,7 @@ fn main() {
                         num(r.run.shadow_rays),
                         num(r.efficiency),
                         num(r.vs_best_single),
+                        num(r.vs_solid_angle),
                         r.run.estimates,
                         2 * direct::N
                     ))

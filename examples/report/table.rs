@@ -4,7 +4,7 @@
 use crate::direct::{self, DirectRow};
 use crate::estimators::{self, EstRow, WeightRow};
 use crate::sequences::SeqRow;
-use crate::{Config, POINTS, Row};
+use crate::{Config, POINTS, PreparedRow, Row};
 use mcsample::verify::mis1d::{ESTIMATORS, INTEGRANDS};
 
 pub struct Table {
@@ -163,22 +163,32 @@ pub fn warps(cfg: &Config, rows: &[Row]) -> Table {
     t
 }
 
-pub fn prepared(rows: &[Row]) -> Table {
+pub fn prepared(rows: &[PreparedRow]) -> Table {
     let note = "Scalar ns of a light's first sample at a new shading point (set-up included) and \
-                of each further sample of the light prepared there (`light.at(p)`), timed as one \
-                interleaved pair."
+                of each further sample of the light prepared there (`light.at_sampling(p, n, \
+                mode)`, n the registry's tilted normal), timed as one interleaved pair; further / \
+                solid angle: a further sample's time over the same light's by solid angle (a \
+                run of its own). The triangle and the rectangle in every light-sampling mode, \
+                the sphere and the disk by solid angle."
         .to_string();
-    let head = ["light", "first ns", "further ns", "first / further"];
-    let mut t = Table::new("Prepared lights", note, &head, 1);
+    let head = [
+        "light",
+        "lights",
+        "first ns",
+        "further ns",
+        "first / further",
+        "further / solid angle",
+    ];
+    let mut t = Table::new("Prepared lights", note, &head, 2);
     for r in rows {
-        if let Some((first, further)) = r.first_further_ns {
-            t.rows.push(vec![
-                r.name.clone(),
-                format!("{first:.2}"),
-                format!("{further:.2}"),
-                ratio(first, further),
-            ]);
-        }
+        t.rows.push(vec![
+            r.name.clone(),
+            r.mode.to_string(),
+            format!("{:.2}", r.first_ns),
+            format!("{:.2}", r.further_ns),
+            ratio(r.first_ns, r.further_ns),
+            format!("{:.2}×", r.further_vs_solid_angle),
+        ]);
     }
     t
 }
@@ -290,20 +300,34 @@ pub fn direct(rows: &[DirectRow]) -> Table {
         "Every strategy of `mcsample::direct` on every scene of `verify::direct`, N = {n} + {n} \
          samples per estimate, independent samples, unit visibility.\n\
          bias σ: the mean's bias in standard errors of the mean of {} estimates (– where every \
-         estimate was equal); rel RMSE: of one estimate.\n\
+         estimate was equal, or the mean is the reference to the f32 rounding of 1e-6: \
+         projected light sampling has no variance on a Lambertian receiver); rel RMSE: of one \
+         estimate.\n\
          x8 ns: per estimate per lane; x16 / x8: the sixteen-wide path's throughput over the \
          eight-wide path's, medians of five alternating runs each (– for scenes with occluders); \
          rays: shadow rays per estimate; eff / best: efficiency \
          1/(MSE·time) over that of the best single strategy (uniform, light or BSDF sampling) \
-         of the scene in any mode.\n\
+         of the scene in any mode; eff / solid angle: over that of the same strategy with the \
+         lights sampled by solid angle.\n\
          lights: how every strategy that samples a light samples it (`LightSampling`): solid \
-         angle, or the bilinear cosine warp for the triangle and rectangle lights, whose scenes \
-         are run in both modes.",
+         angle, the bilinear cosine warp or projected solid angle for the triangle and \
+         rectangle lights, whose scenes are run in every mode (the sphere and the disk have \
+         solid angle only).",
         rows.first().map_or(0, |r| r.run.estimates)
     );
     let head = [
-        "scene", "strategy", "lights", "reference", "bias σ", "rel RMSE", "x8 ns", "scalar ns",
-        "x16 / x8", "rays", "eff / best",
+        "scene",
+        "strategy",
+        "lights",
+        "reference",
+        "bias σ",
+        "rel RMSE",
+        "x8 ns",
+        "scalar ns",
+        "x16 / x8",
+        "rays",
+        "eff / best",
+        "eff / solid angle",
     ];
     let mut t = Table::new("Direct lighting", note, &head, 2);
     for r in rows {
@@ -323,6 +347,7 @@ pub fn direct(rows: &[DirectRow]) -> Table {
             },
             format!("{:.2}", r.run.shadow_rays),
             sig(r.vs_best_single, 3),
+            sig(r.vs_solid_angle, 3),
         ]);
     }
     t

@@ -62,8 +62,8 @@ fuzz_target!(|data: &[u8]| {
     };
     let strategy = Strategy::ALL[byte(2) as usize % Strategy::ALL.len()];
     // Up to 11 of each, so that optimal MIS's cross-fitted path (8 and more) is reached.
-    // Either light-sampling mode, from the top bit of the strategy's byte.
-    let sampling = LightSampling::ALL[usize::from(byte(2) >> 7)];
+    // Every light-sampling mode, from the top bits of the strategy's byte.
+    let sampling = LightSampling::ALL[usize::from(byte(2) >> 6) % LightSampling::ALL.len()];
     let config = Config::new(u32::from(byte(3) % 12), u32::from(byte(4) % 12))
         .with_roulette(f[27])
         .with_light_sampling(sampling);

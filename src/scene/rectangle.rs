@@ -11,7 +11,7 @@ use super::shape::{
 use crate::lane::V3;
 use crate::math::Math;
 use crate::point::{Point2, Point3};
-use crate::warp::{BilinearRectangle, plane_dot, wide_cross};
+use crate::warp::{BilinearRectangle, ProjectedRectangle, plane_dot, wide_cross};
 
 /// A parallelogram `corner + s·ex + t·ey`, s, t ∈ [0, 1], facing the side of its normal ex × ey.
 /// As a light ([`RectangleLight`](super::RectangleLight)) it emits on that side.
@@ -26,7 +26,9 @@ use crate::warp::{BilinearRectangle, plane_dot, wide_cross};
 ///
 /// Prepared for [`LightSampling::Bilinear`] with a shading normal, a rectangle sampled in solid
 /// angle samples through the bilinear cosine warp ([`BilinearRectangle`]); one sampled by area
-/// keeps area sampling.
+/// keeps area sampling. Prepared for [`LightSampling::Projected`], any parallelogram samples by
+/// projected solid angle ([`ProjectedRectangle`]): pdf n·ω / P above the receiver's horizon, 0
+/// (and no distance) below it, unless it falls back to solid angle.
 ///
 /// A shading point closer to the plane than 1e-6 of its distance to the nearest corner, zero
 /// edges and non-finite input give pdf 0.
@@ -69,14 +71,21 @@ impl Rectangle<Vec3> {
 /// A [`Rectangle`] prepared at one shading point.
 #[derive(Clone, Copy)]
 pub struct PreparedRectangle<V: Point3 = Vec3> {
-    /// The spherical rectangle, behind the bilinear warp: with equal weights (solid angle)
-    /// unless prepared for [`LightSampling::Bilinear`] with a normal.
-    rect: BilinearRectangle<V3<V::Lane>>,
+    map: RectangleMap<V3<V::Lane>>,
     /// The edges.
     ex: V3<V::Lane>,
     ey: V3<V::Lane>,
     /// corner·(ex × ey), in f64 for the f32 lanes: negative on the side the normal faces.
     h: V::Lane,
+}
+
+/// The map a prepared rectangle samples by.
+#[derive(Clone, Copy)]
+enum RectangleMap<P: Point3> {
+    /// The spherical rectangle behind the bilinear warp: with equal weights (solid angle)
+    /// unless prepared for [`LightSampling::Bilinear`] with a normal.
+    Spherical(BilinearRectangle<P>),
+    Projected(ProjectedRectangle<P>),
 }
 
 impl<V: Point3<Lane = L>, L: Math> Shape<V> for Rectangle<V> {
@@ -86,12 +95,17 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Rectangle<V> {
     fn at(&self, p: V, n: V, sampling: LightSampling) -> PreparedRectangle<V> {
         let corner = self.corner.to_lanes() - p.to_lanes();
         let (ex, ey) = (self.ex.to_lanes(), self.ey.to_lanes());
-        let n = match sampling {
-            LightSampling::Bilinear => n.to_lanes(),
-            _ => V3::all(L::ZERO),
+        let map = match sampling {
+            LightSampling::Bilinear => {
+                RectangleMap::Spherical(BilinearRectangle::new(corner, ex, ey, n.to_lanes()))
+            }
+            LightSampling::Projected => {
+                RectangleMap::Projected(ProjectedRectangle::new(corner, ex, ey, n.to_lanes()))
+            }
+            _ => RectangleMap::Spherical(BilinearRectangle::new(corner, ex, ey, V3::all(L::ZERO))),
         };
         PreparedRectangle {
-            rect: BilinearRectangle::new(corner, ex, ey, n),
+            map,
             ex,
             ey,
             h: normal_dot(corner, ex, ey),
@@ -123,26 +137,37 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Rectangle<V> {
 impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedRectangle<V> {
     #[inline]
     fn sample(&self, u: V::Vec2) -> ShapeSample<V> {
-        let (x, kept) = self.rect.sample(u.to_lanes());
-        // The point may be far from unit length (a light 1e-22 away): normalise from a scale
-        // where its square cannot underflow.
+        let u = u.to_lanes();
+        let (x, kept) = match &self.map {
+            RectangleMap::Spherical(r) => r.sample(u),
+            RectangleMap::Projected(r) => r.sample(u),
+        };
+        // The spherical map's point may be far from unit length (a light 1e-22 away):
+        // normalise from a scale where its square cannot underflow.
         let wi = x.normalize_scaled();
         warped(wi, kept, self.eval(V::from_lanes(wi)))
     }
 
-    /// The spherical rectangle's pdf of unit `wi` (through the bilinear warp where prepared so)
-    /// and the distance h/(wi·n) to the plane.
+    /// The pdf of unit `wi` by the prepared map (spherical, through the bilinear warp, or
+    /// projected) and the distance h/(wi·n) to the plane.
     #[inline(always)]
     fn eval(&self, wi: V) -> (L, L) {
         let wi = wi.to_lanes();
-        on_shape(self.rect.pdf(wi), self.h / normal_dot(wi, self.ex, self.ey))
+        let pdf = match &self.map {
+            RectangleMap::Spherical(r) => r.pdf(wi),
+            RectangleMap::Projected(r) => r.pdf(wi),
+        };
+        on_shape(pdf, self.h / normal_dot(wi, self.ex, self.ey))
     }
 
-    /// The distance of `eval`, decided by the spherical pdf alone, as the triangle's.
+    /// The distance of `eval`, decided as the triangle's.
     #[inline(always)]
     fn dist(&self, wi: V) -> L {
         let wi = wi.to_lanes();
-        let pdf = self.rect.spherical().pdf(wi);
+        let pdf = match &self.map {
+            RectangleMap::Spherical(r) => r.spherical().pdf(wi),
+            RectangleMap::Projected(r) => r.pdf(wi),
+        };
         on_shape(pdf, self.h / normal_dot(wi, self.ex, self.ey)).1
     }
 

@@ -10,7 +10,7 @@ use crate::point::Point3;
 /// How a prepared light samples its directions, for a receiver whose shading normal it knows.
 /// Every shape offers [`SolidAngle`](LightSampling::SolidAngle); a shape prepared with a mode it
 /// does not offer (or with the zero normal) samples by solid angle. The report's JSON names the
-/// modes `solid_angle` and `bilinear`.
+/// modes `solid_angle`, `bilinear` and `projected`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum LightSampling {
@@ -23,17 +23,32 @@ pub enum LightSampling {
     /// [`warp::bilinear_rectangle`](crate::warp::bilinear_rectangle)): approximately
     /// proportional to the receiver's cosine. The sphere and the disk keep solid angle.
     Bilinear,
+    /// The triangle and the parallelogram by projected solid angle
+    /// ([`warp::projected_triangle`](crate::warp::projected_triangle),
+    /// [`warp::projected_rectangle`](crate::warp::projected_rectangle)): exactly proportional
+    /// to the receiver's cosine over the part above its horizon, so that a Lambertian receiver
+    /// under an unoccluded light of constant radiance has no variance. Such a light has pdf 0,
+    /// and no distance, in directions below the horizon, except where the polygon falls back
+    /// to solid angle (a projected solid angle below
+    /// [`PROJECTED_MIN_SR`](crate::warp::PROJECTED_MIN_SR), …). The sphere and the disk keep
+    /// solid angle.
+    Projected,
 }
 
 impl LightSampling {
     /// Every mode, in the order of the report.
-    pub const ALL: [LightSampling; 2] = [LightSampling::SolidAngle, LightSampling::Bilinear];
+    pub const ALL: [LightSampling; 3] = [
+        LightSampling::SolidAngle,
+        LightSampling::Bilinear,
+        LightSampling::Projected,
+    ];
 
     /// The name the report's JSON uses.
     pub fn name(self) -> &'static str {
         match self {
             LightSampling::SolidAngle => "solid_angle",
             LightSampling::Bilinear => "bilinear",
+            LightSampling::Projected => "projected",
         }
     }
 }

@@ -13,7 +13,9 @@ use crate::lane::V3;
 use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::warp::plane_dot;
-use crate::warp::{BilinearTriangle, uniform_triangle, wide_cross};
+use crate::warp::{
+    BilinearTriangle, ProjectedTriangle, SphericalTriangle, uniform_triangle, wide_cross,
+};
 
 /// A triangle with vertices `v`, facing the side of its normal (b − a) × (c − a): the side from
 /// which the vertices run counter-clockwise. As a light
@@ -30,7 +32,10 @@ use crate::warp::{BilinearTriangle, uniform_triangle, wide_cross};
 ///
 /// Prepared for [`LightSampling::Bilinear`] with a shading normal, it samples through the
 /// bilinear cosine warp ([`BilinearTriangle`]), whose pdf is the spherical one times the
-/// bilinear density at the direction's spherical inverse.
+/// bilinear density at the direction's spherical inverse. Prepared for
+/// [`LightSampling::Projected`], it samples by projected solid angle ([`ProjectedTriangle`]):
+/// pdf n·ω / P above the receiver's horizon, 0 (and no
+/// distance) below it, unless it falls back to solid angle.
 ///
 /// Coincident or collinear vertices, a shading point closer to the plane than 1e-6 of its
 /// distance to the nearest vertex, and non-finite input give pdf 0.
@@ -67,11 +72,28 @@ impl Triangle<Vec3> {
 /// A [`Triangle`] prepared at one shading point.
 #[derive(Clone, Copy)]
 pub struct PreparedTriangle<V: Point3 = Vec3> {
-    /// The spherical triangle, behind the bilinear warp: with equal weights (solid angle) unless
-    /// prepared for [`LightSampling::Bilinear`] with a normal.
-    tri: BilinearTriangle<V3<V::Lane>>,
+    map: TriangleMap<V3<V::Lane>>,
     /// The vertices relative to the shading point.
     v: [V3<V::Lane>; 3],
+}
+
+/// The map a prepared triangle samples by.
+#[derive(Clone, Copy)]
+enum TriangleMap<P: Point3> {
+    /// The spherical triangle behind the bilinear warp: with equal weights (solid angle) unless
+    /// prepared for [`LightSampling::Bilinear`] with a normal.
+    Spherical(BilinearTriangle<P>),
+    Projected(ProjectedTriangle<P>),
+}
+
+impl<P: Point3<Lane = L>, L: Math> TriangleMap<P> {
+    #[inline(always)]
+    fn spherical(&self) -> &SphericalTriangle<P> {
+        match self {
+            TriangleMap::Spherical(t) => t.spherical(),
+            TriangleMap::Projected(t) => t.spherical(),
+        }
+    }
 }
 
 impl<V: Point3<Lane = L>, L: Math> Shape<V> for Triangle<V> {
@@ -81,14 +103,16 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Triangle<V> {
     fn at(&self, p: V, n: V, sampling: LightSampling) -> PreparedTriangle<V> {
         let p = p.to_lanes();
         let v = self.v.map(|x| x.to_lanes() - p);
-        let n = match sampling {
-            LightSampling::Bilinear => n.to_lanes(),
-            _ => V3::all(L::ZERO),
+        let map = match sampling {
+            LightSampling::Bilinear => {
+                TriangleMap::Spherical(BilinearTriangle::new(v[0], v[1], v[2], n.to_lanes()))
+            }
+            LightSampling::Projected => {
+                TriangleMap::Projected(ProjectedTriangle::new(v[0], v[1], v[2], n.to_lanes()))
+            }
+            _ => TriangleMap::Spherical(BilinearTriangle::new(v[0], v[1], v[2], V3::all(L::ZERO))),
         };
-        PreparedTriangle {
-            tri: BilinearTriangle::new(v[0], v[1], v[2], n),
-            v,
-        }
+        PreparedTriangle { map, v }
     }
 
     /// A point uniform on the triangle (the low-distortion map of Heitz 2019), its unit normal
@@ -114,7 +138,7 @@ impl<V: Point3<Lane = L>, L: Math> PreparedTriangle<V> {
     /// The distance h/(wi·n) along unit `wi` to the plane.
     #[inline(always)]
     fn plane_distance(&self, wi: V3<L>) -> L {
-        let (h, _) = self.tri.spherical().plane();
+        let (h, _) = self.map.spherical().plane();
         let [a, b, c] = self.v;
         let wn = plane_dot(
             [wi.x, wi.y, wi.z],
@@ -129,29 +153,41 @@ impl<V: Point3<Lane = L>, L: Math> PreparedTriangle<V> {
 impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedTriangle<V> {
     #[inline]
     fn sample(&self, u: V::Vec2) -> ShapeSample<V> {
-        let (wi, kept) = self.tri.sample(u.to_lanes());
+        let u = u.to_lanes();
+        let (wi, kept) = match &self.map {
+            TriangleMap::Spherical(t) => t.sample(u),
+            TriangleMap::Projected(t) => t.sample(u),
+        };
         warped(wi, kept, self.eval(V::from_lanes(wi)))
     }
 
-    /// The spherical triangle's pdf of unit `wi` (through the bilinear warp where prepared so)
-    /// and the distance h/(wi·n) to the plane (wi·n in f64 from the vertices).
+    /// The pdf of unit `wi` by the prepared map (spherical, through the bilinear warp, or
+    /// projected) and the distance h/(wi·n) to the plane (wi·n in f64 from the vertices).
     #[inline(always)]
     fn eval(&self, wi: V) -> (L, L) {
         let wi = wi.to_lanes();
-        on_shape(self.tri.pdf(wi), self.plane_distance(wi))
+        let pdf = match &self.map {
+            TriangleMap::Spherical(t) => t.pdf(wi),
+            TriangleMap::Projected(t) => t.pdf(wi),
+        };
+        on_shape(pdf, self.plane_distance(wi))
     }
 
-    /// The distance of `eval`, decided by the spherical pdf alone: the bilinear density is
-    /// positive wherever the spherical one is, so the verdict is the same.
+    /// The distance of `eval`, decided by the spherical pdf where the bilinear density sits on
+    /// it (positive wherever it is, so the verdict is the same), by the projected pdf itself.
     #[inline(always)]
     fn dist(&self, wi: V) -> L {
         let wi = wi.to_lanes();
-        on_shape(self.tri.spherical().pdf(wi), self.plane_distance(wi)).1
+        let pdf = match &self.map {
+            TriangleMap::Spherical(t) => t.spherical().pdf(wi),
+            TriangleMap::Projected(t) => t.pdf(wi),
+        };
+        on_shape(pdf, self.plane_distance(wi)).1
     }
 
     /// The shading point is on the side of the normal.
     #[inline(always)]
     fn front(&self) -> L::Mask {
-        self.tri.spherical().plane().0.lt(L::ZERO)
+        self.map.spherical().plane().0.lt(L::ZERO)
     }
 }

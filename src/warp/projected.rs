@@ -884,6 +884,12 @@ impl<P: Point3<Lane = L>, L: Math> ProjectedTriangle<P> {
         })
     }
 
+    /// The spherical triangle it falls back to.
+    #[inline]
+    pub fn spherical(&self) -> &SphericalTriangle<P> {
+        &self.0.base
+    }
+
     projected_methods!(
         projected_triangle,
         projected_triangle_pdf,
@@ -906,6 +912,12 @@ impl<P: Point3<Lane = L>, L: Math> ProjectedRectangle<P> {
             core: Projected::new([c, c + x, c + x + y, c + y], n.to_lanes()),
             base: SphericalRectangle::new(corner, ex, ey),
         })
+    }
+
+    /// The spherical rectangle it falls back to.
+    #[inline]
+    pub fn spherical(&self) -> &SphericalRectangle<P> {
+        &self.0.base
     }
 
     projected_methods!(

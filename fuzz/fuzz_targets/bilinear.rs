@@ -1,5 +1,6 @@
-//! The bilinear warp on arbitrary weights, and the bilinear polygons on arbitrary geometry and
-//! normals (NaN, ±∞, subnormals, zeros and negatives included). Checked:
+//! The bilinear warp on arbitrary weights, and the polygons that follow a receiver's cosine
+//! (bilinear and projected) on arbitrary geometry and normals (NaN, ±∞, subnormals, zeros and
+//! negatives included). Checked:
 //! - the warp: a point of [0, 1]² for any u that is not NaN, its pdf finite and ≥ 0, and its
 //!   inverse back within 1e-6 of u (the round trip holds for any admissible weights, whose ratio
 //!   does not matter to it); inadmissible weights (≤ 0, NaN, ∞) act as the identity with pdf 1;
@@ -7,18 +8,22 @@
 //!   finite and ≥ 0, and within 1e-3 relative of the sample's pdf where the light is sampled
 //!   spherically and the spherical inverse returns the sample's u′ to 2e-6; a dropped sample at the documented point (+z, or
 //!   the corner); the zero normal giving the plain spherical sampler bit for bit;
+//! - the projected polygons: a kept sample a unit direction whose pdf is the pdf function's bit for
+//!   bit, finite and > 0, its inverse in [0, 1]² (or NaN where it falls back to a spherical
+//!   rectangle beyond the inverse's reach); a dropped one +z with pdf 0;
 //! - every lane of the x8 and x16 forms equal to the scalar form, bit for bit.
 
 #![no_main]
 
 use glam::{Vec2, Vec3};
 use libfuzzer_sys::fuzz_target;
-use mcsample::lane::{F32x16, F32x8};
+use mcsample::lane::{F32x8, F32x16};
 use mcsample::warp::{
-    self, BilinearRectangle, BilinearTriangle, SphericalRectangle, SphericalTriangle,
+    self, BilinearRectangle, BilinearTriangle, ProjectedRectangle, ProjectedTriangle,
+    SphericalRectangle, SphericalTriangle,
 };
-use mcsample::x16::{Vec2x16, Vec3x16};
 use mcsample::x8::{Vec2x8, Vec3x8};
+use mcsample::x16::{Vec2x16, Vec3x16};
 
 fn floats<const N: usize>(data: &[u8]) -> [f32; N] {
     let mut out = [0.5f32; N];
@@ -147,6 +152,36 @@ fn check_sample(
     }
 }
 
+/// A projected polygon's sample (scalar, and lanes of x8 and x16: sample, pdf and inverse).
+fn check_projected(
+    name: &str,
+    (x, pdf): (Vec3, f32),
+    pdf_fn: f32,
+    (back, fallback): (Vec2, bool),
+    lanes: [(Vec3, f32, Vec2); 2],
+) {
+    let ctx = || format!("{name}: x {x:?}, pdf {pdf:e}, pdf(x) {pdf_fn:e}, back {back:?}");
+    assert!(pdf.is_finite() && pdf >= 0.0, "{}", ctx());
+    if pdf > 0.0 {
+        let len = x.as_dvec3().length();
+        assert!((len - 1.0).abs() <= 1e-6, "{}: not unit", ctx());
+        assert_eq!(pdf.to_bits(), pdf_fn.to_bits(), "{}: pdf function", ctx());
+        // Where it falls back, the spherical inverse's own NaN (a rectangle beyond its reach).
+        assert!(
+            in_unit_square(back) || (fallback && back.is_nan()),
+            "{}: inverse",
+            ctx()
+        );
+    } else {
+        assert_eq!(bits3(x), bits3(Vec3::Z), "{}: dropped sample", ctx());
+    }
+    for (i, (xl, pl, bl)) in lanes.into_iter().enumerate() {
+        assert_eq!(bits3(xl), bits3(x), "{}: lanes ({i})", ctx());
+        assert_eq!(pl.to_bits(), pdf.to_bits(), "{}: lane pdf ({i})", ctx());
+        assert_eq!(bits2(bl), bits2(back), "{}: lane inverse ({i})", ctx());
+    }
+}
+
 /// The zero normal's sample equals the plain sampler's, bit for bit.
 fn same(name: &str, (x, p): (Vec3, f32), (y, q): (Vec3, f32)) {
     assert_eq!(
@@ -229,5 +264,40 @@ fuzz_target!(|data: &[u8]| {
         "rectangle",
         BilinearRectangle::new(c, a, ey, Vec3::ZERO).sample(u),
         plain.sample(u),
+    );
+
+    // The projected polygons, for the fuzzed normal as given (not normalised: the sampler
+    // normalises it).
+    let t = ProjectedTriangle::new(a, b, c, n);
+    let t8 = ProjectedTriangle::new(s8(a), s8(b), s8(c), s8(n));
+    let t16 = ProjectedTriangle::new(s16(a), s16(b), s16(c), s16(n));
+    let (x, pdf) = t.sample(u);
+    let (x8, p8) = t8.sample(Vec2x8::splat(u));
+    let (x16, p16) = t16.sample(Vec2x16::splat(u));
+    check_projected(
+        &format!("projected triangle {:?} n {n:?} u {u:?}", [a, b, c]),
+        (x, pdf),
+        t.pdf(x),
+        (t.inverse(x), t.by_solid_angle()),
+        [
+            (x8.lane(2), p8.to_array()[2], t8.inverse(x8).lane(2)),
+            (x16.lane(12), p16.to_array()[12], t16.inverse(x16).lane(12)),
+        ],
+    );
+    let r = ProjectedRectangle::new(c, a, ey, n);
+    let r8 = ProjectedRectangle::new(s8(c), s8(a), s8(ey), s8(n));
+    let r16 = ProjectedRectangle::new(s16(c), s16(a), s16(ey), s16(n));
+    let (x, pdf) = r.sample(u);
+    let (x8, p8) = r8.sample(Vec2x8::splat(u));
+    let (x16, p16) = r16.sample(Vec2x16::splat(u));
+    check_projected(
+        &format!("projected rectangle {:?} n {n:?} u {u:?}", [c, a, ey]),
+        (x, pdf),
+        r.pdf(x),
+        (r.inverse(x), r.by_solid_angle()),
+        [
+            (x8.lane(4), p8.to_array()[4], r8.inverse(x8).lane(4)),
+            (x16.lane(7), p16.to_array()[7], r16.inverse(x16).lane(7)),
+        ],
     );
 });

@@ -156,10 +156,12 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         // Normalised here: a frame from a normal an ulp off unit is that far from orthonormal,
         // and the pdf's round trip through it that far off.
         let normal = n;
-        let n = n.normalize();
-        let frame = Frame::from_normal(n);
         // The geometry in the f64 lane (see `Wide`), the sampling in f32.
         let g = Wide::new(v, normal);
+        // The unit normal from f64, where the squares of huge or tiny coordinates neither
+        // overflow nor vanish.
+        let n = narrow3::<L>(g.n);
+        let frame = Frame::from_normal(n);
         let mut rev = g.v;
         rev.reverse();
         let g = Wide {
@@ -183,10 +185,16 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             *we = t;
             p = p + t.area;
             let local = |x: V3<L::Wide>| frame.to_local(narrow3(x));
-            let (area, theta) = (L::narrow(t.area), L::narrow(t.theta));
-            // The normal's z is the accurate m̂·n, not the rotation's.
+            // The normal's z is the accurate m̂·n, not the rotation's. A great circle within
+            // 2⁻⁶⁰ of the normal is a radial segment: its ellipse's r² = m_z²/(m_z² + (m_xy·d)²)
+            // would underflow to 0/0, and its sweep is below 1e-14 of the least P sampled.
+            let mz = L::narrow(t.mz);
+            let radial = mz.abs().lt(L::c(f64::powi(2.0, -60)));
+            let mz = L::select(radial, L::ZERO, mz);
+            let area = L::select(radial, L::ZERO, L::narrow(t.area));
+            let theta = L::narrow(t.theta);
             let m = local(t.m);
-            let m = V3::new(m.x, m.y, L::narrow(t.mz));
+            let m = V3::new(m.x, m.y, mz);
             central = central & m.z.ge(L::ZERO);
             sectors = sectors + area;
             spread = spread + area.abs();
@@ -481,13 +489,16 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
     fn inverse_local(&self, w: V3<L>) -> V2<L> {
         let d = unit2(xy(w));
         let rho2 = w.x.mul_add(w.x, w.y * w.y);
-        // Central: the sector whose azimuth range holds d.
+        // Central: the sector whose azimuth range holds d, ends included, the later one where
+        // two share an end (the same share, by continuity; at the turn's end, 1 for 0). With
+        // the normal on the boundary the sectors span less than a turn, and the last one's end
+        // is u₁ = 1.
         let mut cum = L::ZERO;
         let mut area = L::ZERO;
         let mut radius_c = L::ZERO;
         for e in &self.e {
             let here =
-                cross2(e.da, d).ge(L::ZERO) & cross2(d, e.db).gt(L::ZERO) & e.area.gt(L::ZERO);
+                cross2(e.da, d).ge(L::ZERO) & cross2(d, e.db).ge(L::ZERO) & e.area.gt(L::ZERO);
             let part = L::HALF * e.m.z * angle(e.a, arc_point(e.m, d));
             area = L::select(here, cum + part, area);
             let (_, r2) = radii(e.m, d);
@@ -503,7 +514,11 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         let radius_d = L::select(radius_d.is_finite(), radius_d, L::ZERO);
         let f = L::narrow(self.swept_wide(d) / self.wide_p);
         let share = L::select(self.central, area / self.sectors, f);
-        V2::new(L::select(self.central, radius_c, radius_d), share)
+        // The normal itself, in the central case: u₀ = 0 for every u₁ (take 0), where its
+        // azimuth is 0/0.
+        let axis = rho2.eq(L::ZERO) & self.central;
+        let u = V2::new(L::select(self.central, radius_c, radius_d), share);
+        V2::select(axis, V2::default(), u)
     }
 }
 
@@ -737,7 +752,8 @@ impl<P: Point3> SolidAngle<P> for SphericalRectangle<P> {
     #[inline(always)]
     fn sample(&self, u: P::Vec2) -> (P, P::Lane) {
         let (p, kept) = SphericalRectangle::sample(self, u);
-        let w = P::from_lanes(p.to_lanes().normalize());
+        // From a scale where the square cannot underflow: a light 1e-21 away is a light.
+        let w = P::from_lanes(p.to_lanes().normalize_scaled());
         let pdf = SphericalRectangle::pdf(self, w);
         (
             w,
@@ -1105,7 +1121,8 @@ pub fn projected_rectangle_pdf<P: Point3<Lane = L>, L: Math>(
 }
 
 /// Inverse of [`projected_rectangle`]: the u that maps to direction `w`, clamped to the
-/// square. NaN gives NaN.
+/// square. NaN gives NaN, as does a rectangle sampled by solid angle beyond
+/// [`SPHERICAL_RECTANGLE_INVERSE_REACH`](crate::warp::SPHERICAL_RECTANGLE_INVERSE_REACH).
 #[inline]
 pub fn projected_rectangle_inverse<P: Point3<Lane = L>, L: Math>(
     w: P,

@@ -375,3 +375,152 @@ fn a_triangle_below_the_horizon_is_empty() {
     assert_eq!(t.sample(Vec2::new(0.3, 0.6)), (Vec3::Z, 0.0));
     assert_eq!(t.pdf((v[0] + v[1] + v[2]).normalize()), 0.0);
 }
+
+/// A kept sample is a unit direction with the pdf function's value, and its inverse lies in
+/// the square; where the polygon is sampled by projected solid angle, the cosine estimate is
+/// the irradiance.
+fn check_hard_case(name: &str, shape: Shape, n: Vec3, v: [Vec3; 3]) {
+    let t = Light::new(shape, n, v);
+    // The spherical polygon depends on the vertices' directions alone; unit ones keep the
+    // reference's clipping of a vertex 1e21 away from cancelling.
+    let unit: Vec<DVec3> = vertices(shape, v).iter().map(|x| x.normalize()).collect();
+    let want = irradiance(n, &unit);
+    let mut rng = TestRng::new(13);
+    let border = border();
+    let us = border
+        .iter()
+        .map(|&[x, y]| Vec2::new(x, y))
+        .chain((0..200).map(|_| Vec2::new(rng.u01(), rng.u01())));
+    let mut kept = 0;
+    for u in us {
+        let (w, pdf) = t.sample(u);
+        assert!(pdf.is_finite() && pdf >= 0.0, "{name}: pdf {pdf} at {u}");
+        if pdf == 0.0 {
+            continue;
+        }
+        kept += 1;
+        assert!(
+            (w.as_dvec3().length() - 1.0).abs() < 1e-6,
+            "{name}: {w} at {u}"
+        );
+        assert_eq!(t.pdf(w).to_bits(), pdf.to_bits(), "{name}: pdf at {u}");
+        let back = t.inverse(w);
+        assert!(
+            back.cmpge(Vec2::ZERO).all() && back.cmple(Vec2::ONE).all(),
+            "{name}: inverse {back} of {u}"
+        );
+        if !t.by_solid_angle() {
+            let est = n.as_dvec3().normalize().dot(w.as_dvec3()) / pdf as f64;
+            assert!(
+                (est - want).abs() < 1e-5 * want,
+                "{name}: {est} vs {want} at {u}"
+            );
+        }
+    }
+    assert!(kept > 150, "{name}: {kept} kept");
+}
+
+#[test]
+fn hard_cases_keep_the_contract() {
+    let s = 0.3;
+    let tri = |c: Vec3| {
+        [
+            c + Vec3::new(-s, -s, 0.0),
+            c + Vec3::new(s, -s, 0.0),
+            c + Vec3::new(0.0, s, 0.0),
+        ]
+    };
+    let rect = |c: Vec3| {
+        [
+            c + Vec3::new(-s, -s, 0.0),
+            Vec3::new(2.0 * s, 0.0, 0.0),
+            Vec3::new(0.0, 2.0 * s, 0.0),
+        ]
+    };
+    let up = Vec3::new(0.0, 0.0, 1.0);
+    let facing_neg_x = [
+        Vec3::new(-1.0, -s, -s),
+        Vec3::new(-1.0, s, -s),
+        Vec3::new(-1.0, 0.0, s),
+    ];
+    let cases: Vec<(&str, Shape, Vec3, [Vec3; 3])> = vec![
+        // Across the receiver's horizon: the normal +y, half the light below.
+        ("straddling the horizon", Shape::Triangle, Vec3::Y, tri(up)),
+        (
+            "straddling the horizon",
+            Shape::Rectangle,
+            Vec3::Y,
+            rect(up),
+        ),
+        // An edge whose great circle passes through the normal (+z): y = −s at x from −s to s
+        // on the plane z = 1 is not; the edge from (−s, 0, 1) to (s, 0, 1) is.
+        (
+            "an edge through the zenith",
+            Shape::Triangle,
+            Vec3::Z,
+            [
+                Vec3::new(-s, 0.0, 1.0),
+                Vec3::new(s, 0.0, 1.0),
+                Vec3::new(0.0, s, 1.0),
+            ],
+        ),
+        // The normal exactly on a vertex (the fuzzer's find: its radial edges sweep nothing).
+        (
+            "the normal on a vertex",
+            Shape::Triangle,
+            Vec3::new(0.5, 0.5, 0.5),
+            [
+                Vec3::new(1.2e-38, 0.0, 48.6),
+                Vec3::new(-3.5e21, 1.8e-40, -2.5),
+                Vec3::new(0.5, 0.5, 0.5),
+            ],
+        ),
+        (
+            "the normal on a vertex",
+            Shape::Rectangle,
+            Vec3::new(-s, -s, 1.0),
+            rect(up),
+        ),
+        // A sliver: 1e-4 wide, a unit long.
+        (
+            "a sliver",
+            Shape::Triangle,
+            Vec3::new(0.3, 0.0, 1.0),
+            [
+                Vec3::new(-0.5, 0.0, 1.0),
+                Vec3::new(0.5, 0.0, 1.0),
+                Vec3::new(0.0, 1e-4, 1.0),
+            ],
+        ),
+        // 1e-8 sr: sampled by solid angle.
+        (
+            "a polygon of 1e-8 sr",
+            Shape::Triangle,
+            Vec3::Z,
+            tri(up).map(|x| (x - up) * 1e-4 + up),
+        ),
+        // A normal whose squares overflow f32, and a light 1e-21 away (fuzzer's finds).
+        (
+            "a huge normal",
+            Shape::Triangle,
+            Vec3::new(-6.8e31, 16.0, -2.25),
+            facing_neg_x,
+        ),
+        (
+            "a light 1e-21 away",
+            Shape::Rectangle,
+            Vec3::Z,
+            rect(up).map(|x| x * 1e-21),
+        ),
+    ];
+    for (name, shape, n, v) in cases {
+        check_hard_case(&format!("{shape:?} {name}"), shape, n, v);
+    }
+    // The 1e-8 sr triangle falls back; the others are sampled by projected solid angle.
+    let tiny = tri(up).map(|x| (x - up) * 1e-4 + up);
+    assert!(ProjectedTriangle::new(tiny[0], tiny[1], tiny[2], Vec3::Z).by_solid_angle());
+    let v = facing_neg_x;
+    assert!(
+        !ProjectedTriangle::new(v[0], v[1], v[2], Vec3::new(-6.8e31, 16.0, -2.25)).by_solid_angle()
+    );
+}

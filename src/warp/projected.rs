@@ -90,6 +90,8 @@ struct Projected<L: Math, const N: usize, const K: usize> {
     /// ½ Σ θ·m̂_z: P again, to the rounding of its cancelling terms; the scale of the azimuth
     /// solve, whose F ends there.
     sectors: L,
+    /// Σ |½·θ·m̂_z|, the scale of the f32 sums' rounding.
+    spread: L,
     /// The normal lies inside (or on the boundary of) the clipped polygon.
     central: L::Mask,
     /// Unit 2D directions of the least and greatest azimuth (decentral case).
@@ -246,6 +248,7 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             e,
             p,
             sectors,
+            spread,
             central,
             lo,
             hi,
@@ -307,17 +310,17 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
     }
 
     /// F(d): the area of the projected polygon between its least azimuth and unit 2D direction
-    /// d, and the outer and inner edges that direction meets.
+    /// d, and the plane normals of the outer and inner edges that direction meets.
     ///
     /// An edge counts whole where both ends are at or before d, and in part where one is at or
     /// before and the other after (one edge of each chain). The edges returned for the radii
     /// also take an edge that ends exactly at d, so that the greatest azimuth, where nothing
     /// lies after, still has its two (coincident) ellipses.
     #[inline(always)]
-    fn swept(&self, d: V2<L>) -> (L, Edge<L>, Edge<L>) {
+    fn swept(&self, d: V2<L>) -> (L, V3<L>, V3<L>) {
         let mut full = L::ZERO;
-        let (mut outer, mut inner) = (Edge::default(), Edge::default());
-        let (mut part_o, mut part_i) = (Edge::default(), Edge::default());
+        let (mut outer, mut inner) = (V3::default(), V3::default());
+        let (mut part_o, mut part_i) = (V3::default(), V3::default());
         let (mut low_o, mut low_i) = (V3::default(), V3::default());
         for e in &self.e {
             let (ca, cb) = (cross2(e.da, d), cross2(e.db, d));
@@ -328,14 +331,14 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             let meets = (a_le & b_ge) | (b_le & a_ge);
             let low = V3::select(a_le, e.a, e.b);
             let (o, i) = (e.m.z.gt(L::ZERO), e.m.z.lt(L::ZERO));
-            part_o = select_edge(spans & o, *e, part_o);
-            part_i = select_edge(spans & i, *e, part_i);
+            part_o = V3::select(spans & o, e.m, part_o);
+            part_i = V3::select(spans & i, e.m, part_i);
             low_o = V3::select(spans & o, low, low_o);
             low_i = V3::select(spans & i, low, low_i);
-            outer = select_edge(meets & o, *e, outer);
-            inner = select_edge(meets & i, *e, inner);
+            outer = V3::select(meets & o, e.m, outer);
+            inner = V3::select(meets & i, e.m, inner);
         }
-        let part = |e: Edge<L>, low: V3<L>| L::HALF * e.m.z * angle(low, arc_point(e.m, d));
+        let part = |m: V3<L>, low: V3<L>| L::HALF * m.z * angle(low, arc_point(m, d));
         (
             full + part(part_o, low_o) + part(part_i, low_i),
             outer,
@@ -417,7 +420,13 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             // vertex, where no edge lies.
             V2::select(psi.ge(width), self.hi, V2::select(psi.le(L::ZERO), lo, d))
         };
-        let mut last = (V2::default(), Edge::default(), Edge::default());
+        let mut last = (V2::default(), V3::default(), V3::default());
+        // A lane is done once F is within its f32 rounding of the target, or its step within
+        // an ulp of the angle; it then stays where it is, so that the steps the other lanes
+        // of a packet still take repeat its values bit for bit, as its scalar call stops.
+        let noise = L::c(4.0) * L::EPSILON * self.spread;
+        let tiny = L::EPSILON * width;
+        let mut done = L::ZERO.gt(L::ZERO);
         for _ in 0..SOLVE_STEPS {
             let d = at_angle(psi);
             let (f, o, i) = self.swept(d);
@@ -429,14 +438,14 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             best_psi = L::select(better, psi, best_psi);
             last = (
                 V2::select(better, d, last.0),
-                select_edge(better, o, last.1),
-                select_edge(better, i, last.2),
+                V3::select(better, o, last.1),
+                V3::select(better, i, last.2),
             );
             let below = f.lt(target);
             a = L::select(below, psi, a);
             b = L::select(below, b, psi);
-            let (_, ro) = radii(o.m, d);
-            let (_, ri) = radii(i.m, d);
+            let (_, ro) = radii(o, d);
+            let (_, ri) = radii(i, d);
             // dF/dψ = ½(r_o² − r_i²); d√G/dψ = ±F′/(2√G).
             let slope = L::HALF * (ro - ri);
             let g = L::select(upper, total - f, f).max(L::ZERO).sqrt();
@@ -444,15 +453,19 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             let next = psi - (g - root) / dg;
             // Newton where it stays in the bracket, else bisection.
             let to = L::select(next.gt(a) & next.lt(b), next, L::HALF * (a + b));
-            psi = L::select(f.eq(target), psi, to);
+            done = done | err.le(noise) | (to - psi).abs().le(tiny);
+            psi = L::select(done, psi, to);
+            if done.all() {
+                break;
+            }
         }
         let (d, o, i) = last;
         // One Newton step on the sectors summed in f64: in f32 they cancel by up to
         // PROJECTED_MAX_SPREAD, which leaves F an error of that many ε of P.
         // On √F (or √(P − F)) as the solve, which stays well-conditioned at the tips, where
         // F′ → 0.
-        let (_, ro) = radii(o.m, d);
-        let (_, ri) = radii(i.m, d);
+        let (_, ro) = radii(o, d);
+        let (_, ri) = radii(i, d);
         let slope = L::HALF * (ro - ri);
         let f = self.swept_wide(d);
         let target_wide = share.widen() * self.wide_p;
@@ -468,8 +481,8 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         let refine = slope.gt(L::ZERO) & refined.is_finite();
         let d = V2::select(refine, at_angle(refined), d);
         let (_, o, i) = self.swept(d);
-        let (zo, ro) = radii(o.m, d);
-        let (zi, ri) = radii(i.m, d);
+        let (zo, ro) = radii(o, d);
+        let (zi, ri) = radii(i, d);
         // (1 − u)·a + u·b, sums of non-negative terms: at u → 1 against the horizon (zo = 0)
         // z² is (1 − u)·zi to the rounding of each factor, where zi − u·zi would cancel.
         let r2 = (L::ONE - radius).mul_add(ri, radius * ro);
@@ -507,8 +520,8 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         }
         // Decentral: the area swept up to d, and where the radius lies between the ellipses.
         let (_, o, i) = self.swept(d);
-        let (zo, _) = radii(o.m, d);
-        let (zi, _) = radii(i.m, d);
+        let (zo, _) = radii(o, d);
+        let (zi, _) = radii(i, d);
         // Where no edge pair meets d (a direction off the light), 0 rather than 0/0.
         let radius_d = (zi - w.z * w.z) / (zi - zo);
         let radius_d = L::select(radius_d.is_finite(), radius_d, L::ZERO);

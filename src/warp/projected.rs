@@ -85,6 +85,8 @@ struct Projected<L: Math, const N: usize, const K: usize> {
     /// rounding of the result, so that a renderer's own cosine over this pdf gives P.
     normal: V3<L>,
     e: [Edge<L>; K],
+    /// How many of `e` (and `wide`) are edges: K, or N where no lane clipped a vertex.
+    count: usize,
     /// P, the projected area.
     p: L,
     /// ½ Σ θ·m̂_z: P again, to the rounding of its cancelling terms; the scale of the azimuth
@@ -174,7 +176,8 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         let mut sectors = L::ZERO;
         let mut spread = L::ZERO;
         let mut central = L::ZERO.le(L::ZERO);
-        let slots = clip::<L::Wide, N, K>(g.v, g.v.map(|p| dot_in(p, g.n)));
+        let heights = g.v.map(|p| dot_in(p, g.n));
+        let slots = clip::<L::Wide, N, K>(g.v, heights);
         let mut p = <L::Wide as Lane>::ZERO;
         let mut wide = [WideEdge::default(); K];
         for (((edge, we), a), b) in e
@@ -211,6 +214,25 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
                 theta,
             };
         }
+        // With every vertex above the horizon in every lane, the slots are v₀ v₁ v₁ v₂ … and
+        // every other edge has length 0: keep the N real ones, and loop over those alone.
+        let unclipped = heights
+            .iter()
+            .fold(L::Wide::ZERO.le(L::Wide::ZERO), |all, h| {
+                all & h.gt(L::Wide::ZERO)
+            });
+        let count = if unclipped.all() {
+            let (real, real_wide) = (e, wide);
+            for (x, r) in e.iter_mut().zip(real.iter().step_by(2)) {
+                *x = *r;
+            }
+            for (x, r) in wide.iter_mut().zip(real_wide.iter().step_by(2)) {
+                *x = *r;
+            }
+            N
+        } else {
+            K
+        };
         let wide_p = p;
         let p = L::narrow(p);
         // The extreme azimuths: the slot every other slot lies counter-clockwise (clockwise)
@@ -219,9 +241,9 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         let mut tips = [V3::default(); 2];
         let no = L::ZERO.gt(L::ZERO);
         let (mut found_lo, mut found_hi) = (no, no);
-        for x in &e {
+        for x in e.iter().take(count) {
             let (mut is_lo, mut is_hi) = (L::ZERO.le(L::ZERO), L::ZERO.le(L::ZERO));
-            for y in &e {
+            for y in e.iter().take(count) {
                 let c = cross2(x.da, y.da);
                 is_lo = is_lo & c.ge(L::ZERO);
                 is_hi = is_hi & c.le(L::ZERO);
@@ -246,6 +268,7 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             frame,
             normal,
             e,
+            count,
             p,
             sectors,
             spread,
@@ -262,6 +285,12 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             wide_p,
             wide_n: g.n,
         }
+    }
+
+    /// The edges in use.
+    #[inline(always)]
+    fn edges(&self) -> impl Iterator<Item = &Edge<L>> {
+        self.e.iter().take(self.count)
     }
 
     /// A local unit direction for u, in the projected polygon: u₁ the area swept in azimuth
@@ -290,7 +319,7 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         let mut cum = L::ZERO;
         let mut pick = Edge::default();
         let mut before = L::ZERO;
-        for e in &self.e {
+        for e in self.edges() {
             let take = cum.le(target) & e.area.gt(L::ZERO);
             pick = select_edge(take, *e, pick);
             before = L::select(take, cum, before);
@@ -322,7 +351,7 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         let (mut outer, mut inner) = (V3::default(), V3::default());
         let (mut part_o, mut part_i) = (V3::default(), V3::default());
         let (mut low_o, mut low_i) = (V3::default(), V3::default());
-        for e in &self.e {
+        for e in self.edges() {
             let (ca, cb) = (cross2(e.da, d), cross2(e.db, d));
             let (a_le, b_le) = (ca.ge(L::ZERO), cb.ge(L::ZERO));
             let (a_ge, b_ge) = (ca.le(L::ZERO), cb.le(L::ZERO));
@@ -360,7 +389,7 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         let mut full = zero;
         let (mut low_o, mut m_o, mut z_o) = (V3::default(), V3::default(), zero);
         let (mut low_i, mut m_i, mut z_i) = (V3::default(), V3::default(), zero);
-        for e in &self.wide {
+        for e in self.wide.iter().take(self.count) {
             let a_le = dot_in(n, cross_in(e.a, h)).ge(zero);
             let b_le = dot_in(n, cross_in(e.b, h)).ge(zero);
             full = full + W::<L>::select(a_le & b_le, e.area, zero);
@@ -509,7 +538,7 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         let mut cum = L::ZERO;
         let mut area = L::ZERO;
         let mut radius_c = L::ZERO;
-        for e in &self.e {
+        for e in self.edges() {
             let here =
                 cross2(e.da, d).ge(L::ZERO) & cross2(d, e.db).ge(L::ZERO) & e.area.gt(L::ZERO);
             let part = L::HALF * e.m.z * angle(e.a, arc_point(e.m, d));

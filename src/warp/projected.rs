@@ -194,7 +194,7 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             // 2⁻⁶⁰ of the normal is a radial segment: its ellipse's r² = m_z²/(m_z² + (m_xy·d)²)
             // would underflow to 0/0, and its sweep is below 1e-14 of the least P sampled.
             let mz = L::narrow(t.mz);
-            let radial = mz.abs().lt(L::c(f64::powi(2.0, -60)));
+            let radial = mz.abs().lt(L::c(8.673_617_379_884_035e-19)); // 2⁻⁶⁰
             let mz = L::select(radial, L::ZERO, mz);
             let area = L::select(radial, L::ZERO, L::narrow(t.area));
             let theta = L::narrow(t.theta);

@@ -33,7 +33,7 @@ if any("x16_vs_x8" not in r for r in report["direct"]):
 modes = {}
 for r in report["direct"]:
     modes.setdefault(r.get("light_sampling"), set()).add(r["scene"])
-cosine_modes = ("bilinear", "projected")
+cosine_modes = ("bilinear", "projected", "area")
 if set(modes) != {"solid_angle", *cosine_modes} or any(len(modes[m]) < 3 for m in cosine_modes):
     failures.append(f"light sampling: scenes per mode {modes}")
 

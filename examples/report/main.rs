@@ -303,9 +303,6 @@ fn measure(
     }
 }
 
-/// Where spherical sampling breaks down: f32 Arvo and Ureña maps (no fallback) against their f64
-/// instances, for lights from 1e-8 sr to nearly a hemisphere. The error is the worst direction
-/// error over the light's angular size √Ω: a sample displaced by that fraction of the light.
 /// Every light of the registry prepared at the origin for a receiver with normal
 /// [`TILTED`](mcsample::registry::TILTED), in every light-sampling mode its shape offers.
 fn prepared(cfg: &Config, samplers: &[Sampler], pts: &[Vec2]) -> Vec<PreparedRow> {
@@ -354,6 +351,9 @@ fn prepared(cfg: &Config, samplers: &[Sampler], pts: &[Vec2]) -> Vec<PreparedRow
     rows
 }
 
+/// Where spherical sampling breaks down: f32 Arvo and Ureña maps (no fallback) against their f64
+/// instances, for lights from 1e-8 sr to nearly a hemisphere. The error is the worst direction
+/// error over the light's angular size √Ω: a sample displaced by that fraction of the light.
 fn stability(quick: bool) -> Vec<(String, f64, f64, f64)> {
     let pts = uniform_points(if quick { 1024 } else { 16384 }, 21);
     let mut rows = Vec::new();

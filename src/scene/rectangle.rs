@@ -11,7 +11,9 @@ use super::shape::{
 use crate::lane::V3;
 use crate::math::Math;
 use crate::point::{Point2, Point3};
-use crate::warp::{BilinearRectangle, ProjectedRectangle, plane_dot, wide_cross};
+use crate::warp::{
+    BilinearRectangle, ProjectedRectangle, SphericalRectangle, plane_dot, wide_cross,
+};
 
 /// A parallelogram `corner + s·ex + t·ey`, s, t ∈ [0, 1], facing the side of its normal ex × ey.
 /// As a light ([`RectangleLight`](super::RectangleLight)) it emits on that side.
@@ -28,10 +30,12 @@ use crate::warp::{BilinearRectangle, ProjectedRectangle, plane_dot, wide_cross};
 /// angle samples through the bilinear cosine warp ([`BilinearRectangle`]); one sampled by area
 /// keeps area sampling. Prepared for [`LightSampling::Projected`], any parallelogram samples by
 /// projected solid angle ([`ProjectedRectangle`]): pdf n·ω / P above the receiver's horizon, 0
-/// (and no distance) below it, unless it falls back to solid angle.
+/// (and no distance) below it, unless it falls back to solid angle. Prepared for
+/// [`LightSampling::Area`], it samples by area, the pdf converted to solid angle.
 ///
-/// A shading point closer to the plane than 1e-6 of its distance to the nearest corner, zero
-/// edges and non-finite input give pdf 0.
+/// A shading point closer to the plane than 1e-6 of its distance to the nearest corner (but in
+/// the projected mode, whose map has no such limit), zero edges and non-finite input give pdf
+/// 0.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Rectangle<V: Point3 = Vec3> {
     /// The corner.
@@ -86,6 +90,8 @@ enum RectangleMap<P: Point3> {
     /// unless prepared for [`LightSampling::Bilinear`] with a normal.
     Spherical(BilinearRectangle<P>),
     Projected(ProjectedRectangle<P>),
+    /// By area in every lane ([`LightSampling::Area`]).
+    Area(SphericalRectangle<P>),
 }
 
 impl<V: Point3<Lane = L>, L: Math> Shape<V> for Rectangle<V> {
@@ -101,6 +107,9 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Rectangle<V> {
             }
             LightSampling::Projected => {
                 RectangleMap::Projected(ProjectedRectangle::new(corner, ex, ey, n.to_lanes()))
+            }
+            LightSampling::Area => {
+                RectangleMap::Area(SphericalRectangle::new(corner, ex, ey).by_area_only())
             }
             _ => RectangleMap::Spherical(BilinearRectangle::new(corner, ex, ey, V3::all(L::ZERO))),
         };
@@ -141,6 +150,7 @@ impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedRectangle<V> {
         let (x, kept) = match &self.map {
             RectangleMap::Spherical(r) => r.sample(u),
             RectangleMap::Projected(r) => r.sample(u),
+            RectangleMap::Area(r) => r.sample(u),
         };
         // The spherical map's point may be far from unit length (a light 1e-22 away):
         // normalise from a scale where its square cannot underflow.
@@ -156,6 +166,7 @@ impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedRectangle<V> {
         let pdf = match &self.map {
             RectangleMap::Spherical(r) => r.pdf(wi),
             RectangleMap::Projected(r) => r.pdf(wi),
+            RectangleMap::Area(r) => r.pdf(wi),
         };
         on_shape(pdf, self.h / normal_dot(wi, self.ex, self.ey))
     }
@@ -167,6 +178,7 @@ impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedRectangle<V> {
         let pdf = match &self.map {
             RectangleMap::Spherical(r) => r.spherical().pdf(wi),
             RectangleMap::Projected(r) => r.pdf(wi),
+            RectangleMap::Area(r) => r.pdf(wi),
         };
         on_shape(pdf, self.h / normal_dot(wi, self.ex, self.ey)).1
     }

@@ -10,7 +10,7 @@ use crate::point::Point3;
 /// How a prepared light samples its directions, for a receiver whose shading normal it knows.
 /// Every shape offers [`SolidAngle`](LightSampling::SolidAngle); a shape prepared with a mode it
 /// does not offer (or with the zero normal) samples by solid angle. The report's JSON names the
-/// modes `solid_angle`, `bilinear` and `projected`.
+/// modes `solid_angle`, `bilinear`, `projected` and `area`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum LightSampling {
@@ -33,14 +33,19 @@ pub enum LightSampling {
     /// [`PROJECTED_MIN_SR`](crate::warp::PROJECTED_MIN_SR), …). The sphere and the disk keep
     /// solid angle.
     Projected,
+    /// The triangle and the parallelogram uniformly by area, the pdf converted to solid angle
+    /// (what renderers without spherical samplers do). The disk is sampled by area in every
+    /// mode; the sphere keeps its cone.
+    Area,
 }
 
 impl LightSampling {
     /// Every mode, in the order of the report.
-    pub const ALL: [LightSampling; 3] = [
+    pub const ALL: [LightSampling; 4] = [
         LightSampling::SolidAngle,
         LightSampling::Bilinear,
         LightSampling::Projected,
+        LightSampling::Area,
     ];
 
     /// The name the report's JSON uses.
@@ -49,6 +54,7 @@ impl LightSampling {
             LightSampling::SolidAngle => "solid_angle",
             LightSampling::Bilinear => "bilinear",
             LightSampling::Projected => "projected",
+            LightSampling::Area => "area",
         }
     }
 }

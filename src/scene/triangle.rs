@@ -35,10 +35,12 @@ use crate::warp::{
 /// bilinear density at the direction's spherical inverse. Prepared for
 /// [`LightSampling::Projected`], it samples by projected solid angle ([`ProjectedTriangle`]):
 /// pdf n·ω / P above the receiver's horizon, 0 (and no
-/// distance) below it, unless it falls back to solid angle.
+/// distance) below it, unless it falls back to solid angle. Prepared for
+/// [`LightSampling::Area`], it samples by area, the pdf converted to solid angle.
 ///
 /// Coincident or collinear vertices, a shading point closer to the plane than 1e-6 of its
-/// distance to the nearest vertex, and non-finite input give pdf 0.
+/// distance to the nearest vertex (but in the projected mode, whose map has no such limit), and
+/// non-finite input give pdf 0.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Triangle<V: Point3 = Vec3> {
     /// The vertices.
@@ -84,6 +86,8 @@ enum TriangleMap<P: Point3> {
     /// prepared for [`LightSampling::Bilinear`] with a normal.
     Spherical(BilinearTriangle<P>),
     Projected(ProjectedTriangle<P>),
+    /// By area in every lane ([`LightSampling::Area`]).
+    Area(SphericalTriangle<P>),
 }
 
 impl<P: Point3<Lane = L>, L: Math> TriangleMap<P> {
@@ -92,6 +96,7 @@ impl<P: Point3<Lane = L>, L: Math> TriangleMap<P> {
         match self {
             TriangleMap::Spherical(t) => t.spherical(),
             TriangleMap::Projected(t) => t.spherical(),
+            TriangleMap::Area(t) => t,
         }
     }
 }
@@ -109,6 +114,9 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Triangle<V> {
             }
             LightSampling::Projected => {
                 TriangleMap::Projected(ProjectedTriangle::new(v[0], v[1], v[2], n.to_lanes()))
+            }
+            LightSampling::Area => {
+                TriangleMap::Area(SphericalTriangle::new(v[0], v[1], v[2]).by_area_only())
             }
             _ => TriangleMap::Spherical(BilinearTriangle::new(v[0], v[1], v[2], V3::all(L::ZERO))),
         };
@@ -157,6 +165,7 @@ impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedTriangle<V> {
         let (wi, kept) = match &self.map {
             TriangleMap::Spherical(t) => t.sample(u),
             TriangleMap::Projected(t) => t.sample(u),
+            TriangleMap::Area(t) => t.sample(u),
         };
         warped(wi, kept, self.eval(V::from_lanes(wi)))
     }
@@ -169,6 +178,7 @@ impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedTriangle<V> {
         let pdf = match &self.map {
             TriangleMap::Spherical(t) => t.pdf(wi),
             TriangleMap::Projected(t) => t.pdf(wi),
+            TriangleMap::Area(t) => t.pdf(wi),
         };
         on_shape(pdf, self.plane_distance(wi))
     }
@@ -181,6 +191,7 @@ impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedTriangle<V> {
         let pdf = match &self.map {
             TriangleMap::Spherical(t) => t.spherical().pdf(wi),
             TriangleMap::Projected(t) => t.pdf(wi),
+            TriangleMap::Area(t) => t.pdf(wi),
         };
         on_shape(pdf, self.plane_distance(wi)).1
     }

@@ -108,7 +108,8 @@ struct Projected<L: Math, const N: usize, const K: usize> {
     wide: [WideEdge<L::Wide>; K],
     wide_p: L::Wide,
     wide_n: V3<L::Wide>,
-    /// P ≥ [`PROJECTED_MIN_SR`] and everything finite.
+    /// P ≥ [`PROJECTED_MIN_SR`], the sweeps cancelling by at most [`PROJECTED_MAX_SPREAD`],
+    /// an azimuth range found (decentral case), and everything finite.
     valid: L::Mask,
     /// P = 0 for a valid normal: nothing above the horizon, nothing to sample.
     empty: L::Mask,
@@ -157,13 +158,12 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
     /// either winding) as seen by a receiver with unit normal `n`.
     #[inline(always)]
     fn new(v: [V3<L::Wide>; N], n: V3<L>) -> Self {
-        // Normalised here: a frame from a normal an ulp off unit is that far from orthonormal,
-        // and the pdf's round trip through it that far off.
         let normal = n;
         // The geometry in the f64 lane (see `Wide`), the sampling in f32.
         let g = Wide::new(v, normal);
         // The unit normal from f64, where the squares of huge or tiny coordinates neither
-        // overflow nor vanish.
+        // overflow nor vanish: a frame from a normal an ulp off unit is that far from
+        // orthonormal, and the pdf's round trip through it that far off.
         let n = narrow3::<L>(g.n);
         let frame = Frame::from_normal(n);
         let mut rev = g.v;
@@ -248,12 +248,19 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
                 is_lo = is_lo & c.ge(L::ZERO);
                 is_hi = is_hi & c.le(L::ZERO);
             }
-            lo = V2::select(is_lo, x.da, lo);
-            hi = V2::select(is_hi, x.da, hi);
+            // The first extreme slot, where several tie (two vertices on one radial plane):
+            // the N edges kept where no lane clipped start at v₀ … in the order the 2N slots
+            // first meet them, so a lane of a packet with a clipped lane picks the same one.
+            let (take_lo, take_hi) = (is_lo & !found_lo, is_hi & !found_hi);
+            lo = V2::select(take_lo, x.da, lo);
+            hi = V2::select(take_hi, x.da, hi);
             found_lo = found_lo | is_lo;
             found_hi = found_hi | is_hi;
             let [t_lo, t_hi] = tips;
-            tips = [V3::select(is_lo, x.a, t_lo), V3::select(is_hi, x.a, t_hi)];
+            tips = [
+                V3::select(take_lo, x.a, t_lo),
+                V3::select(take_hi, x.a, t_hi),
+            ];
         }
         // The azimuth solve sums the sectors in f32, whose errors, a few ε of each term's
         // size, reach the sampled u₁ magnified by their cancellation.
@@ -395,7 +402,9 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             full = full + W::<L>::select(a_le & b_le, e.area, zero);
             let spans = (a_le & !b_le) | (b_le & !a_le);
             let low = V3::select(a_le, e.a, e.b);
-            let (o, i) = (spans & e.mz.gt(zero), spans & e.mz.lt(zero));
+            // Radial edges as the f32 sweep classes them (|m_z| < 2⁻⁶⁰: neither).
+            let radial = W::<L>::c(8.673_617_379_884_035e-19);
+            let (o, i) = (spans & e.mz.gt(radial), spans & e.mz.lt(-radial));
             low_o = V3::select(o, low, low_o);
             m_o = V3::select(o, e.m, m_o);
             z_o = W::<L>::select(o, e.mz, z_o);
@@ -890,7 +899,8 @@ macro_rules! projected_methods {
         }
 
         /// True (lane by lane) where the polygon is sampled by solid angle instead: P below
-        /// [`PROJECTED_MIN_SR`] (but above 0), sweeps cancelling by more than
+        /// [`PROJECTED_MIN_SR`] (0 too: a polygon wholly below the horizon, whose samples are
+        /// then dropped), sweeps cancelling by more than
         /// [`PROJECTED_MAX_SPREAD`], a normal within rounding of an edge's plane that leaves
         /// no azimuth range, vertices or a normal that are not finite.
         #[inline]
@@ -962,7 +972,8 @@ pub struct ProjectedRectangle<P: Point3>(Sampler<P, SphericalRectangle<P>, 4, 8>
 
 impl<P: Point3<Lane = L>, L: Math> ProjectedRectangle<P> {
     /// The parallelogram corner + s·ex + t·ey, s, t ∈ [0, 1], relative to the shading point,
-    /// seen by a receiver with unit normal `n`. Its corners are summed in f64, exactly.
+    /// seen by a receiver with unit normal `n`. Its corners are summed in f64 (exactly where
+    /// the coordinates of corner, ex and ey are within 2²⁹ of each other).
     #[inline]
     pub fn new(corner: P, ex: P, ey: P, n: P) -> Self {
         let [c, x, y] = [corner, ex, ey].map(|p| widen3(p.to_lanes()));

@@ -626,6 +626,21 @@ impl<P: Point3<Lane = L>, L: Math> SphericalRectangle<P> {
         self.s.by_area
     }
 
+    /// The same parallelogram sampled by area in every lane, with the area pdf converted to
+    /// solid angle (the scene's [`LightSampling::Area`](crate::scene::LightSampling::Area)).
+    #[inline]
+    pub fn by_area_only(self) -> Self {
+        let all = L::ZERO.le(L::ZERO);
+        Self {
+            s: Setup {
+                by_area: all,
+                beyond_reach: !all,
+                ..self.s
+            },
+            width: PhantomData,
+        }
+    }
+
     /// The unit directions of the corners where the square's corners (0, 0), (1, 0), (0, 1),
     /// (1, 1) land, by either map: corner, corner + ex, corner + ey, corner + ex + ey.
     #[inline(always)]

@@ -345,6 +345,21 @@ impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
         self.s.by_area
     }
 
+    /// The same triangle sampled by area in every lane, with the area pdf converted to solid
+    /// angle: what renderers do without a spherical sampler (the scene's
+    /// [`LightSampling::Area`](crate::scene::LightSampling::Area)).
+    #[inline]
+    pub fn by_area_only(self) -> Self {
+        let all = L::ZERO.le(L::ZERO);
+        Self {
+            s: Setup {
+                by_area: all,
+                ..self.s
+            },
+            width: PhantomData,
+        }
+    }
+
     /// The plane as (h, n): n a positive multiple of (b − a) × (c − a), and h its offset,
     /// scaled so that the distance along unit direction w to the plane is h / (w·n) and h has
     /// the sign of v·n for any vertex v.

@@ -99,12 +99,16 @@ fn polygon_scenes() -> Vec<DirectScene> {
 }
 
 #[test]
-fn every_strategy_is_unbiased_with_cosine_light_sampling() {
+fn every_strategy_is_unbiased_in_every_light_sampling_mode() {
     // As above, on the scenes whose lights the modes change: each strategy that samples a light
     // reads the mode's pdf, for its light samples and in the MIS weights of its BSDF samples.
     let scenes = polygon_scenes();
     assert!(scenes.len() >= 3, "{} polygon scenes", scenes.len());
-    for mode in [LightSampling::Bilinear, LightSampling::Projected] {
+    for mode in [
+        LightSampling::Bilinear,
+        LightSampling::Projected,
+        LightSampling::Area,
+    ] {
         let config = Config::new(4, 4).with_light_sampling(mode);
         let runs = Strategy::ALL
             .iter()
@@ -746,6 +750,7 @@ macro_rules! packets_equal_scalars {
                 Config::new(9, 8),
                 Config::new(2, 3).with_light_sampling(LightSampling::Bilinear),
                 Config::new(3, 1).with_light_sampling(LightSampling::Projected),
+                Config::new(1, 2).with_light_sampling(LightSampling::Area),
             ] {
                 for strategy in Strategy::ALL {
                     let firsts: [u32; $n] = core::array::from_fn(|i| 100 * i as u32);

@@ -1086,16 +1086,20 @@ fn phong_chi_square() {
     }
 }
 
-/// In the bilinear and projected modes, a triangle or rectangle light keeps the contract of
-/// every light: the sample's pdf is the pdf function's and its distance the hit distance, bit
+/// In the bilinear, projected and area modes, a triangle or rectangle light keeps the contract
+/// of every light: the sample's pdf is the pdf function's and its distance the hit distance, bit
 /// for bit; and the hit distance, which skips the bilinear inverse, is the one `pdf_hit` gives,
 /// so "on the light" is still one verdict (directions grazing the silhouette included). The
-/// bilinear mode keeps the spherical support; the projected one has none below the horizon
-/// (unless it falls back to solid angle).
+/// bilinear and area modes keep the spherical support; the projected one has none below the
+/// horizon (unless it falls back to solid angle).
 #[test]
-fn the_cosine_modes_keep_the_light_contract() {
+fn every_light_sampling_mode_keeps_the_light_contract() {
     let mut rng = TestRng::new(31);
-    for mode in [LightSampling::Bilinear, LightSampling::Projected] {
+    for mode in [
+        LightSampling::Bilinear,
+        LightSampling::Projected,
+        LightSampling::Area,
+    ] {
         let mut checked = 0;
         for c in cases() {
             if !matches!(
@@ -1121,11 +1125,19 @@ fn the_cosine_modes_keep_the_light_contract() {
                         let (pdf, t) = l.pdf_hit(d);
                         assert_eq!(t.to_bits(), l.hit(d).to_bits(), "{}: hit at {d}", c.name);
                         assert_eq!(pdf > 0.0, t.is_finite(), "{}: verdicts at {d}", c.name);
-                        if mode == LightSampling::Bilinear {
+                        if mode != LightSampling::Projected {
                             assert_eq!(
                                 pdf > 0.0,
                                 plain.pdf(d) > 0.0,
                                 "{}: mode changed the support",
+                                c.name
+                            );
+                        } else if d == w && d.dot(n) > 1e-2 {
+                            // Above the horizon the projected support is the light's.
+                            assert_eq!(
+                                pdf > 0.0,
+                                plain.pdf(d) > 0.0,
+                                "{}: projected support at {d}",
                                 c.name
                             );
                         } else if pdf > 0.0 && d.dot(n) <= 0.0 {
@@ -1144,4 +1156,46 @@ fn the_cosine_modes_keep_the_light_contract() {
         }
         assert!(checked > 10_000, "{checked} directions");
     }
+}
+
+/// In the area mode a planar light's density in solid angle is the area density converted,
+/// t²/(A·|cos θ_l|) (Pharr et al., PBR 4th ed., §4.2.3), here from f64 geometry; the
+/// solid-angle mode's, 1/Ω, is the control that differs from it.
+#[test]
+fn the_area_mode_samples_by_area() {
+    let mut rng = TestRng::new(41);
+    let (a, b, c) = (
+        Vec3::new(-1.0, -0.5, 1.0),
+        Vec3::new(1.5, -0.3, 1.4),
+        Vec3::new(0.1, 1.2, 0.8),
+    );
+    let light = Light::from(TriangleLight::new(a, b, c, Vec3::ONE));
+    let (ad, bd, cd) = (a.as_dvec3(), b.as_dvec3(), c.as_dvec3());
+    let n = (bd - ad).cross(cd - ad);
+    let area = n.length() / 2.0;
+    let n = n.normalize();
+    let prepared = light.at_sampling(Vec3::ZERO, Vec3::Z, LightSampling::Area);
+    let plain = light.at(Vec3::ZERO);
+    let mut worst = 0.0f64;
+    for _ in 0..2000 {
+        let s = prepared.sample(rng.u2());
+        assert!(s.pdf > 0.0);
+        let w = s.wi.as_dvec3().normalize();
+        let t = ad.dot(n) / w.dot(n);
+        let want = t * t / (area * w.dot(n).abs());
+        worst = worst.max((s.pdf as f64 - want).abs() / want);
+    }
+    assert!(worst < 1e-5, "area pdf off by {worst:e}");
+    // The triangle spans distances 1.1 to 2.1 and tilts: uniform in solid angle is far from
+    // uniform by area.
+    let spread = (0..200)
+        .map(|_| {
+            let s = prepared.sample(rng.u2());
+            (plain.pdf(s.wi) as f64 - s.pdf as f64).abs() / s.pdf as f64
+        })
+        .fold(0.0, f64::max);
+    assert!(
+        spread > 0.1,
+        "the area pdf is the solid-angle one ({spread})"
+    );
 }

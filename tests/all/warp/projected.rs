@@ -524,3 +524,54 @@ fn hard_cases_keep_the_contract() {
         !ProjectedTriangle::new(v[0], v[1], v[2], Vec3::new(-6.8e31, 16.0, -2.25)).by_solid_angle()
     );
 }
+
+#[test]
+fn lanes_agree_where_vertices_tie_at_the_extreme_azimuths() {
+    // A vertical window seen from a floor (n = +z): its vertical edges are radial, so two
+    // vertices share each extreme azimuth. One lane crossing the horizon makes the packet keep
+    // all 2N slots, where the other lanes' scalar calls keep N edges: the same vertex must win.
+    let n = Vec3::Z;
+    let window = |drop: f32| {
+        [
+            Vec3::new(1.0, -0.5, 0.2 - drop),
+            Vec3::new(0.0, 1.0, 0.0),
+            Vec3::new(0.0, 0.0, 1.0),
+        ]
+    };
+    let triangle = |drop: f32| {
+        [
+            Vec3::new(1.0, 0.2, 0.3 - drop),
+            Vec3::new(1.0, 0.2, 1.5 - drop),
+            Vec3::new(1.0, -0.5, 0.8 - drop),
+        ]
+    };
+    for shape in SHAPES {
+        let geometry = |drop| match shape {
+            Shape::Triangle => triangle(drop),
+            Shape::Rectangle => window(drop),
+        };
+        let cfg: [[Vec3; 3]; 8] =
+            core::array::from_fn(|i| geometry(if i == 3 { 0.6 } else { 0.0 }));
+        let wide = |k: usize| Vec3x8::from(cfg.map(|c| c[k]));
+        let t8 = Light::new(shape, Vec3x8::splat(n), [wide(0), wide(1), wide(2)]);
+        let mut rng = TestRng::new(17);
+        let edges = [0.0, 1e-3, 0.5, 0.999, 1.0];
+        let us = edges
+            .iter()
+            .flat_map(|&x| edges.map(|y| Vec2::new(x, y)))
+            .chain((0..200).map(|_| Vec2::new(rng.u01(), rng.u01())));
+        for u in us {
+            let (w8, pdf8) = t8.sample(Vec2x8::splat(u));
+            for (i, v) in cfg.iter().enumerate() {
+                let t = Light::new(shape, n, *v);
+                let (w, pdf) = t.sample(u);
+                assert_eq!(
+                    w.to_array().map(f32::to_bits),
+                    w8.lane(i).to_array().map(f32::to_bits),
+                    "{shape:?} lane {i} at {u}"
+                );
+                assert_eq!(pdf.to_bits(), pdf8.to_array()[i].to_bits());
+            }
+        }
+    }
+}

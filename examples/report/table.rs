@@ -310,9 +310,9 @@ pub fn direct(rows: &[DirectRow]) -> Table {
          of the scene in any mode; eff / solid angle: over that of the same strategy with the \
          lights sampled by solid angle.\n\
          lights: how every strategy that samples a light samples it (`LightSampling`): solid \
-         angle, the bilinear cosine warp or projected solid angle for the triangle and \
+         angle, the bilinear cosine warp, projected solid angle or area for the triangle and \
          rectangle lights, whose scenes are run in every mode (the sphere and the disk have \
-         solid angle only).",
+         their own samplers only).",
         rows.first().map_or(0, |r| r.run.estimates)
     );
     let head = [

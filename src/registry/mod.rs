@@ -51,7 +51,9 @@ pub use lights::LightSampler;
 /// instances for a receiver's normal ([`TILTED`], and one with a corner below the horizon). The
 /// projected triangle is the large one for the normal inside it (+z), [`TILTED`] (decentral) and
 /// +x (across the horizon), and a small one (0.2) for [`TILTED`]; the projected rectangle the
-/// same with −x across the horizon. The tiny sphere has sin²θmax = 1e-4: smaller ones (down to 1e-12) are
+/// same with −x across the horizon. The projected caps are a sphere wholly above the horizon,
+/// one with its centre above and one with it below the horizon, each across it, and a small
+/// one (0.0035 sr) for [`TILTED`]. The tiny sphere has sin²θmax = 1e-4: smaller ones (down to 1e-12) are
 /// tested in the scene's tests, where the χ² judge is the f64 pdf; here the f32 pdf's slack of
 /// 2ε in sin θ (a band 5e-5 of this cone's area) stays below what 1e6 samples see.
 macro_rules! families {
@@ -99,6 +101,12 @@ macro_rules! families {
                 (1.0, Vec3::NEG_X),
                 (0.2, TILTED),
             ].map(|(s, n)| warp::ProjectedSolidAngleRectangle { v: rectangle(s), n });
+            ProjectedCap: warp::ProjectedSolidAngleCap = [
+                (Vec3::new(0.3, 0.1, 1.0), 0.5, Vec3::Z),
+                (Vec3::new(2.0, 0.3, 0.5), 1.0, Vec3::Z),
+                (Vec3::new(2.0, -0.3, -0.4), 1.0, Vec3::Z),
+                (Vec3::new(0.0, 0.0, 30.0), 1.0, TILTED),
+            ].map(|(c, r, n)| warp::ProjectedSolidAngleCap { c, r, n });
             Light: LightSampler = LightSampler::REGISTERED;
             BsdfLambert: BsdfLambert = [BsdfLambert { wo: Vec3::new(0.3, -0.2, 0.933_809) }];
             BsdfPhong: BsdfPhong = [

@@ -3,7 +3,7 @@
 //! `phong`, `triangle`, `spherical_triangle`, `spherical_rectangle`, `tent`), the bilinear
 //! warp composed with the spherical polygons (`bilinear`), and triangles sampled by projected
 //! solid angle for a receiver's normal (`projected`: [`projected_triangle`],
-//! [`projected_rectangle`]).
+//! [`projected_rectangle`]; `projected_cap`: [`projected_cap`], the sphere's cap).
 //!
 //! # One function, every width
 //!
@@ -56,6 +56,7 @@ mod hemisphere;
 mod phong;
 mod polygon;
 mod projected;
+mod projected_cap;
 mod solid_angle;
 mod sphere;
 mod spherical_rectangle;
@@ -91,6 +92,10 @@ pub use projected::{
     ProjectedSolidAngleTriangle, ProjectedTriangle, projected_rectangle,
     projected_rectangle_inverse, projected_rectangle_pdf, projected_triangle,
     projected_triangle_inverse, projected_triangle_pdf,
+};
+pub use projected_cap::{
+    CAP_MAX_SPREAD, ProjectedCap, ProjectedSolidAngleCap, projected_cap, projected_cap_inverse,
+    projected_cap_pdf,
 };
 pub use solid_angle::{SolidAngleRectangle, SolidAngleTriangle, polygon_size};
 pub use sphere::{UniformSphere, uniform_sphere, uniform_sphere_inverse, uniform_sphere_pdf};

@@ -42,6 +42,8 @@ mod warp {
     // projected triangle on every target).
     #[cfg(not(target_family = "wasm"))]
     mod projected;
+    // Sphere lights by projected solid angle: P, zero variance, the three cases, lanes.
+    mod projected_cap;
     #[cfg(not(target_family = "wasm"))]
     mod properties;
     #[cfg(not(target_family = "wasm"))]

@@ -28,6 +28,7 @@ mod hemisphere;
 mod lights;
 mod phong;
 mod projected;
+mod projected_cap;
 mod sphere;
 mod spherical_rectangle;
 mod spherical_triangle;

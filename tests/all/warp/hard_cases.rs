@@ -126,7 +126,8 @@ fn warp_case(s: Sampler) -> Warp {
             Sampler::SphericalTriangle(_)
             | Sampler::BilinearTriangle(_)
             | Sampler::ProjectedTriangle(_)
-            | Sampler::ProjectedRectangle(_) => Some(Vec3::Z),
+            | Sampler::ProjectedRectangle(_)
+            | Sampler::ProjectedCap(_) => Some(Vec3::Z),
             Sampler::SphericalRectangle(r) => Some(r.v[0]),
             Sampler::BilinearRectangle(r) => Some(r.v[0]),
             _ => None,

@@ -8,6 +8,9 @@
 //!   splitting pays it;
 //! - `x8`: eight first samples at once;
 //! - `pdf` and `hit` of the prepared light at a direction (a BSDF sample's MIS weight);
+//! - `scene_modes`: a further sample of each light prepared for the registry's tilted normal in
+//!   every light-sampling mode its shape offers (`light.at_sampling(p, n, mode)`): the modes'
+//!   cost over solid angle's, as the report's "Prepared lights" table gives it;
 //! - the BSDFs' `sample` and `eval`, scalar and x8; light selection by power.
 //!
 //! `cargo bench --bench scene`; for the AVX2 build,
@@ -19,7 +22,7 @@ use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use glam::Vec3;
-use mcsample::scene::{Lambert, Light, Phong, PowerTable};
+use mcsample::scene::{AnyShape, Lambert, Light, LightSampling, Phong, PowerTable};
 use mcsample::verify::registry;
 use mcsample::x8::{F32x8, Vec3x8};
 
@@ -80,6 +83,36 @@ fn lights(c: &mut Criterion) {
                 black_box(&vals);
             })
         });
+    }
+    g.finish();
+}
+
+fn modes(c: &mut Criterion) {
+    let (pts, _) = common::r2_points(N);
+    let mut out = vec![Vec3::ZERO; N];
+    let mut g = c.benchmark_group("scene_modes");
+    g.throughput(Throughput::Elements(N as u64));
+    let (p, n) = (Vec3::ZERO, mcsample::registry::TILTED);
+    for s in registry::registry() {
+        let Some(light) = s.scene_light() else {
+            continue;
+        };
+        let modes: &[LightSampling] = match light.shape {
+            AnyShape::Triangle(_) | AnyShape::Rectangle(_) => &LightSampling::ALL,
+            AnyShape::Sphere(_) => &[LightSampling::SolidAngle, LightSampling::Projected],
+            _ => continue,
+        };
+        for &mode in modes {
+            let prepared = light.at_sampling(p, n, mode);
+            g.bench_function(BenchmarkId::new(s.name(), mode.name()), |bn| {
+                bn.iter(|| {
+                    for (o, &u) in out.iter_mut().zip(black_box(&pts)) {
+                        *o = prepared.sample(u).wi;
+                    }
+                    black_box(&out);
+                })
+            });
+        }
     }
     g.finish();
 }
@@ -166,5 +199,5 @@ fn selection(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, lights, bsdfs, selection);
+criterion_group!(benches, lights, modes, bsdfs, selection);
 criterion_main!(benches);

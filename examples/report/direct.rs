@@ -152,11 +152,15 @@ fn x16_vs_x8(scene: &DirectScene, strategy: Strategy, config: DirectConfig, coun
 }
 
 /// The light-sampling modes that change `scene`: all for scenes with a triangle or rectangle
-/// light, solid angle alone for the others (the sphere and the disk have no other mode yet).
+/// light, solid angle and projected for those with a sphere, solid angle alone for the others
+/// (the disk is sampled by area in every mode).
 fn modes(scene: &DirectScene) -> &'static [LightSampling] {
     let polygon = |l: &Light| matches!(l.shape, AnyShape::Triangle(_) | AnyShape::Rectangle(_));
+    let sphere = |l: &Light| matches!(l.shape, AnyShape::Sphere(_));
     if scene.lights.iter().any(polygon) {
         &LightSampling::ALL
+    } else if scene.lights.iter().any(sphere) {
+        &[LightSampling::SolidAngle, LightSampling::Projected]
     } else {
         &[LightSampling::SolidAngle]
     }

@@ -312,11 +312,10 @@ fn prepared(cfg: &Config, samplers: &[Sampler], pts: &[Vec2]) -> Vec<PreparedRow
         let Some(light) = s.scene_light() else {
             continue;
         };
-        let polygon = matches!(light.shape, AnyShape::Triangle(_) | AnyShape::Rectangle(_));
-        let modes: &[LightSampling] = if polygon {
-            &LightSampling::ALL
-        } else {
-            &[LightSampling::SolidAngle]
+        let modes: &[LightSampling] = match light.shape {
+            AnyShape::Triangle(_) | AnyShape::Rectangle(_) => &LightSampling::ALL,
+            AnyShape::Sphere(_) => &[LightSampling::SolidAngle, LightSampling::Projected],
+            _ => &[LightSampling::SolidAngle],
         };
         let mut plain = f64::NAN;
         for &mode in modes {

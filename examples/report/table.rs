@@ -169,7 +169,8 @@ pub fn prepared(rows: &[PreparedRow]) -> Table {
                 mode)`, n the registry's tilted normal), timed as one interleaved pair; further / \
                 solid angle: a further sample's time over the same light's by solid angle (a \
                 run of its own). The triangle and the rectangle in every light-sampling mode, \
-                the sphere and the disk by solid angle."
+                the sphere by solid angle (its cone) and projected solid angle (its cap), the \
+                disk by solid angle."
         .to_string();
     let head = [
         "light",

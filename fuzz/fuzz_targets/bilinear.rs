@@ -11,7 +11,10 @@
 //! - the projected polygons: a kept sample a unit direction whose pdf is the pdf function's bit for
 //!   bit, finite and > 0, its inverse in [0, 1]² (or NaN where it falls back to a spherical
 //!   rectangle beyond the inverse's reach); a dropped one +z with pdf 0;
-//! - every lane of the x8 and x16 forms equal to the scalar form, bit for bit.
+//! - the projected cap (a sphere about a fuzzed centre, of a fuzzed radius): as the projected
+//!   polygons, except that a sample on the horizon keeps its direction with pdf 0;
+//! - every lane of the x8 and x16 forms equal to the scalar form, bit for bit; for the cap with
+//!   a different sphere in every other lane.
 
 #![no_main]
 
@@ -19,8 +22,8 @@ use glam::{Vec2, Vec3};
 use libfuzzer_sys::fuzz_target;
 use mcsample::lane::{F32x8, F32x16};
 use mcsample::warp::{
-    self, BilinearRectangle, BilinearTriangle, ProjectedRectangle, ProjectedTriangle,
-    SphericalRectangle, SphericalTriangle,
+    self, BilinearRectangle, BilinearTriangle, ProjectedCap, ProjectedRectangle,
+    ProjectedTriangle, SphericalRectangle, SphericalTriangle,
 };
 use mcsample::x8::{Vec2x8, Vec3x8};
 use mcsample::x16::{Vec2x16, Vec3x16};
@@ -182,6 +185,37 @@ fn check_projected(
     }
 }
 
+/// The projected cap's sample: as `check_projected`, but a sample exactly on the horizon keeps
+/// its direction (pdf 0) so that it inverts.
+fn check_cap(
+    name: &str,
+    cap: &ProjectedCap<Vec3>,
+    u: Vec2,
+    n: Vec3,
+    lanes: [(Vec3, f32, Vec2); 2],
+) {
+    let (x, pdf) = cap.sample(u);
+    let back = cap.inverse(x);
+    let ctx = || format!("{name}: x {x:?}, pdf {pdf:e}, back {back:?}");
+    assert!(pdf.is_finite() && pdf >= 0.0, "{}", ctx());
+    let on_horizon = || {
+        let cos = x.as_dvec3().dot(n.as_dvec3().normalize());
+        (x.as_dvec3().length() - 1.0).abs() <= 1e-6 && cos.abs() <= 1e-6
+    };
+    if pdf > 0.0 {
+        assert!((x.as_dvec3().length() - 1.0).abs() <= 1e-6, "{}: not unit", ctx());
+        assert_eq!(pdf.to_bits(), cap.pdf(x).to_bits(), "{}: pdf function", ctx());
+        assert!(in_unit_square(back), "{}: inverse", ctx());
+    } else {
+        assert!(bits3(x) == bits3(Vec3::Z) || on_horizon(), "{}: dropped sample", ctx());
+    }
+    for (i, (xl, pl, bl)) in lanes.into_iter().enumerate() {
+        assert_eq!(bits3(xl), bits3(x), "{}: lanes ({i})", ctx());
+        assert_eq!(pl.to_bits(), pdf.to_bits(), "{}: lane pdf ({i})", ctx());
+        assert_eq!(bits2(bl), bits2(back), "{}: lane inverse ({i})", ctx());
+    }
+}
+
 /// The zero normal's sample equals the plain sampler's, bit for bit.
 fn same(name: &str, (x, p): (Vec3, f32), (y, q): (Vec3, f32)) {
     assert_eq!(
@@ -298,6 +332,37 @@ fuzz_target!(|data: &[u8]| {
         [
             (x8.lane(4), p8.to_array()[4], r8.inverse(x8).lane(4)),
             (x16.lane(7), p16.to_array()[7], r16.inverse(x16).lane(7)),
+        ],
+    );
+
+    // The cap about a, of radius |b.x|, among other spheres in the other lanes (b and c as
+    // centres, radii from the weights), so that each lane runs its own case and solve.
+    let r = f[9].abs();
+    let cap = ProjectedCap::new(a, r, n);
+    let others = [(b, f[2]), (c, f[3]), (a, f[4]), (b, r), (c, f[5])];
+    let mixed = |k: usize, i: usize| if i % 2 == 0 { (a, r) } else { others[(i / 2 + k) % 5] };
+    let c8: [(Vec3, f32); 8] = core::array::from_fn(|i| mixed(0, i));
+    let c16: [(Vec3, f32); 16] = core::array::from_fn(|i| mixed(1, i));
+    let cap8 = ProjectedCap::new(
+        Vec3x8::from(c8.map(|p| p.0)),
+        F32x8::from(c8.map(|p| p.1)),
+        s8(n),
+    );
+    let cap16 = ProjectedCap::new(
+        Vec3x16::from(c16.map(|p| p.0)),
+        F32x16::from(c16.map(|p| p.1)),
+        s16(n),
+    );
+    let (x8, p8) = cap8.sample(Vec2x8::splat(u));
+    let (x16, p16) = cap16.sample(Vec2x16::splat(u));
+    check_cap(
+        &format!("projected cap {a:?} r {r:e} n {n:?} u {u:?}"),
+        &cap,
+        u,
+        n,
+        [
+            (x8.lane(2), p8.to_array()[2], cap8.inverse(x8).lane(2)),
+            (x16.lane(12), p16.to_array()[12], cap16.inverse(x16).lane(12)),
         ],
     );
 });

@@ -30,8 +30,9 @@ pub enum LightSampling {
     /// under an unoccluded light of constant radiance has no variance. Such a light has pdf 0,
     /// and no distance, in directions below the horizon, except where the polygon falls back
     /// to solid angle (a projected solid angle below
-    /// [`PROJECTED_MIN_SR`](crate::warp::PROJECTED_MIN_SR), …). The sphere and the disk keep
-    /// solid angle.
+    /// [`PROJECTED_MIN_SR`](crate::warp::PROJECTED_MIN_SR), …). The sphere, from outside, by
+    /// its cap's projected solid angle ([`warp::projected_cap`](crate::warp::projected_cap)),
+    /// as exact; the disk keeps its area.
     Projected,
     /// The triangle and the parallelogram uniformly by area, the pdf converted to solid angle
     /// (what renderers without spherical samplers do). The disk is sampled by area in every

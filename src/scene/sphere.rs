@@ -11,7 +11,7 @@ use crate::frame::Frame;
 use crate::lane::{Lane, Mask, V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
-use crate::warp::{cone_h_from_sin2, uniform_cone, uniform_sphere};
+use crate::warp::{ProjectedCap, cone_h_from_sin2, uniform_cone, uniform_sphere};
 
 /// A sphere of radius `radius` about `center`; as a light ([`SphereLight`](super::SphereLight))
 /// it emits outwards.
@@ -27,6 +27,12 @@ use crate::warp::{cone_h_from_sin2, uniform_cone, uniform_sphere};
 ///   solid angle: pdf t²/(|cos θ_l|·4πr²), which along a direction wi is t²/(4πr·√disc), with t
 ///   the forward hit and disc the ray's discriminant. From inside, the point is behind the
 ///   surface it sees (`front` is false).
+///
+/// Prepared for [`LightSampling::Projected`] with a shading normal, it samples from outside by
+/// projected solid angle ([`ProjectedCap`]): pdf n·ω / P over the cap's part above the
+/// receiver's horizon, 0 (and no distance) below it, in all three cases (the cap above, across,
+/// or with its centre below the horizon), unless the cap falls back to its cone (a lune too thin
+/// for f32, [`CAP_MAX_SPREAD`](crate::warp::CAP_MAX_SPREAD)). Other modes keep the cone.
 ///
 /// A zero, negative or non-finite radius, and non-finite input, give pdf 0.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -78,13 +84,17 @@ pub struct PreparedSphere<V: Point3 = Vec3> {
     area_pdf: V::Lane,
     outside: <V::Lane as Lane>::Mask,
     valid: <V::Lane as Lane>::Mask,
+    /// The cap by projected solid angle ([`LightSampling::Projected`]), and the lanes where it
+    /// samples (outside, with a normal, and not falling back to the cone).
+    cap: Option<ProjectedCap<V3<V::Lane>>>,
+    by_cap: <V::Lane as Lane>::Mask,
 }
 
 impl<V: Point3<Lane = L>, L: Math> Shape<V> for Sphere<V> {
     type Prepared = PreparedSphere<V>;
 
     #[inline]
-    fn at(&self, p: V, _n: V, _sampling: LightSampling) -> PreparedSphere<V> {
+    fn at(&self, p: V, n: V, sampling: LightSampling) -> PreparedSphere<V> {
         let (c, p) = (self.center.to_lanes(), p.to_lanes());
         let r = self.radius;
         let d = c - p;
@@ -99,6 +109,14 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Sphere<V> {
         let sin2_bound = (sin_max + slack) * (sin_max + slack);
         let axis = d.scale(L::ONE / dist);
         let valid = r.gt(L::ZERO) & r2.is_finite() & dist2.is_finite() & !p.any_nan();
+        let cap = match sampling {
+            LightSampling::Projected => Some(ProjectedCap::new(d, r, n.to_lanes())),
+            _ => None,
+        };
+        let by_cap = match &cap {
+            Some(cap) => outside & valid & !cap.by_solid_angle(),
+            None => outside & !outside,
+        };
         Prepared {
             d,
             r,
@@ -110,6 +128,8 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Sphere<V> {
             area_pdf: L::c(0.25 / PI) / r2,
             outside,
             valid,
+            cap,
+            by_cap,
         }
     }
 
@@ -145,7 +165,7 @@ impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedSphere<V> {
         // Each path only where some lane takes it (a predictable branch: the shading point
         // decides). From outside: the cone about the axis, in the axis's frame.
         let zero = V3::all(L::ZERO);
-        let w_cone = if self.outside.any() {
+        let w_cone = if (self.outside & !self.by_cap).any() {
             self.frame.to_world(uniform_cone(u, self.h))
         } else {
             zero
@@ -156,7 +176,10 @@ impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedSphere<V> {
         } else {
             zero
         };
-        let wi = V3::select(self.outside, w_cone, w_area);
+        let mut wi = V3::select(self.outside, w_cone, w_area);
+        if let Some(cap) = &self.cap {
+            wi = V3::select(self.by_cap, cap.sample(u).0, wi);
+        }
         let (pdf, dist) = self.eval_lanes(wi);
         ShapeSample {
             wi: V::from_lanes(wi),
@@ -223,6 +246,12 @@ impl<V: Point3<Lane = L>, L: Math> PreparedSphere<V> {
             L::select(self.outside, near, far),
             cone | (!self.outside & far.gt(L::ZERO)),
         );
-        on_shape(L::select(self.valid & on & !wi.any_nan(), pdf, L::ZERO), t)
+        let pdf = L::select(self.valid & on & !wi.any_nan(), pdf, L::ZERO);
+        // By projected solid angle: the cap's own pdf, 0 below the horizon.
+        let pdf = match &self.cap {
+            Some(cap) => L::select(self.by_cap, cap.pdf(wi), pdf),
+            None => pdf,
+        };
+        on_shape(pdf, t)
     }
 }

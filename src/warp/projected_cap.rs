@@ -233,10 +233,20 @@ impl<L: Math> Cap<L> {
         cap.spread = L::select(lune, spread, L::ONE);
         let ellipse_w = W::<L>::c(PI) * s_w * s_w * cz_w.max(W::<L>::ZERO);
         cap.p = L::narrow(ellipse_w + half * W::<L>::TWO);
-        let finite = cap.p.is_finite() & n.z.is_finite() & c.z.is_finite() & cos_a.is_finite();
-        let outside = s.lt(L::ONE);
-        cap.empty = !(cap.p.gt(L::ZERO) & finite & outside);
-        cap.valid = !cap.empty & cap.spread.le(L::c(CAP_MAX_SPREAD as f64));
+        // A sphere to sample: a positive radius, seen from outside, at a finite centre. Then
+        // with a normal (non-zero, finite) nothing may be above the horizon (nothing to sample),
+        // and without one the cone samples it.
+        let zero = W::<L>::ZERO;
+        // (The f32 unit vectors are NaN for a subnormal largest component: such a centre has no
+        // sphere to sample, such a normal none to follow.)
+        let sphere = L::narrow_mask(
+            s_w.gt(zero) & s_w.lt(one) & dd.lt(W::<L>::c(f64::INFINITY)) & dd.gt(zero),
+        ) & !c.any_nan();
+        let normal = L::narrow_mask(nn.gt(zero) & nn.lt(W::<L>::c(f64::INFINITY))) & !n.any_nan();
+        cap.empty = !sphere | (normal & !cap.p.gt(L::ZERO));
+        // P below 1e-30 (a sphere 10¹⁵ radii away) leaves cos θ / P too near f32's overflow.
+        let tiny = cap.p.lt(L::c(1e-30));
+        cap.valid = !cap.empty & normal & !tiny & cap.spread.le(L::c(CAP_MAX_SPREAD as f64));
         cap
     }
 
@@ -348,8 +358,12 @@ impl<L: Math> Cap<L> {
         if (!in_ellipse).any() {
             let y = l.y.abs().min(self.yc);
             let circle = (L::ONE - y * y).max(L::ZERO).sqrt();
-            let delta = l.z * l.z / (circle + l.x);
-            let u0 = delta / self.width(y);
+            // Any direction inverts to a point of the square: at the horns (W = 0) every depth
+            // is the same point, u₀ = 0; a direction far off the lune clamps.
+            let tiny = L::c(f32::MIN_POSITIVE as f64);
+            let delta = l.z * l.z / (circle + l.x).max(tiny);
+            let width = self.width(y);
+            let u0 = L::select(width.gt(L::ZERO), delta / width, L::ZERO);
             let below = (self.area_below(y) / self.g_end).copysign(l.y);
             let u1 = self.half.mul_add(L::ONE + below, self.ellipse) / self.p;
             u = V2::select(in_ellipse, u, V2::new(u0, u1));
@@ -396,8 +410,8 @@ impl<P: Point3<Lane = L>, L: Math> ProjectedCap<P> {
     }
 
     /// True (lane by lane) where the sphere is sampled by its cone of directions instead: a lune
-    /// cancelling by more than [`CAP_MAX_SPREAD`], or nothing to sample (see
-    /// [`projected_cap`]).
+    /// cancelling by more than [`CAP_MAX_SPREAD`], a normal that is 0 or not finite, P below
+    /// 1e-30, or nothing to sample (see [`projected_cap`]).
     #[inline]
     pub fn by_solid_angle(&self) -> L::Mask {
         !self.0.valid
@@ -426,9 +440,11 @@ impl<P: Point3<Lane = L>, L: Math> ProjectedCap<P> {
     pub fn sample(&self, u: P::Vec2) -> (P, L) {
         let c = &self.0;
         let u = u.to_lanes();
-        let mut w = V3::default();
+        let (mut w, mut horizon) = (V3::default(), !c.valid);
         if c.valid.any() {
-            w = c.world(c.sample_local(clamp_u(u))).normalize();
+            let local = c.sample_local(clamp_u(u));
+            horizon = local.z.eq(L::ZERO);
+            w = c.world(local).normalize();
         }
         if (!c.valid).any() {
             let wc = c.cone.to_world(uniform_cone(u, c.h));
@@ -437,10 +453,12 @@ impl<P: Point3<Lane = L>, L: Math> ProjectedCap<P> {
         // The pdf function's own path, so that the two agree bit for bit.
         let pdf = self.pdf_lanes(w);
         // A direction on the horizon (u₀ = 0 in the lune) keeps its place with pdf 0, so that it
-        // inverts; NaN u and nothing to sample give +z.
+        // inverts; other dropped samples give +z: NaN u, nothing to sample, the cone's
+        // overflow, and a direction that rounding put just off the cap (at a lune's horn).
         let dropped = u.any_nan() | c.empty;
         let pdf = L::select(dropped, L::ZERO, pdf);
-        let w = V3::select(dropped, V3::new(L::ZERO, L::ZERO, L::ONE), w);
+        let keep = pdf.gt(L::ZERO) | (c.valid & horizon & !dropped);
+        let w = V3::select(keep, w, V3::new(L::ZERO, L::ZERO, L::ONE));
         (P::from_lanes(w), pdf)
     }
 
@@ -455,7 +473,9 @@ impl<P: Point3<Lane = L>, L: Math> ProjectedCap<P> {
         let c = &self.0;
         let w = w.normalize_scaled();
         let own = c.pdf(w);
-        let cone = L::select(c.on_cap(w), L::c(0.5 / PI) / c.h, L::ZERO);
+        // The cone's pdf, 0 where it overflows (h below about 4.6e-40), as `uniform_cone_pdf`.
+        let cone = L::c(0.5 / PI) / c.h;
+        let cone = L::select(c.on_cap(w) & cone.is_finite(), cone, L::ZERO);
         let pdf = L::select(c.valid, own, cone);
         L::select(c.empty | w.any_nan(), L::ZERO, pdf)
     }
@@ -491,8 +511,9 @@ impl<P: Point3<Lane = L>, L: Math> ProjectedCap<P> {
 /// 1/(2π(1 − cos α)).
 ///
 /// u is clamped to [0, 1]². A sphere wholly below the horizon, a point inside or on the sphere
-/// (r ≥ |center|), a radius of 0, and non-finite input give pdf 0 and direction +z, as NaN in
-/// u does.
+/// (r ≥ |center|), a radius of 0 and a centre or radius that is not finite give pdf 0 and
+/// direction +z, as NaN in u does; a normal that is 0 or not finite, and P below 1e-30 (a
+/// sphere some 10¹⁵ radii away), sample the cone, whose pdf is 0 where it overflows f32.
 #[inline]
 pub fn projected_cap<P: Point2<Lane = L>, L: Math>(
     u: P,

@@ -144,9 +144,10 @@ fn every_strategy_is_unbiased_in_every_light_sampling_mode() {
 #[test]
 fn projected_light_sampling_has_no_variance_on_a_lambertian_receiver() {
     // Peters (2021): sampled with pdf n·ω / P, an unoccluded Lambertian receiver's light
-    // estimate Le·(ρ/π)·n·ω / pdf is Le·ρ·P/π for every sample. Solid angle beside it is the
+    // estimate Le·(ρ/π)·n·ω / pdf is Le·ρ·P/π for every sample; so is a sphere's (Peters &
+    // Dachsbacher 2019), above the horizon and across it. Solid angle beside it is the
     // control: its error is that of the cosine over the light.
-    for name in ["triangle", "rectangle"] {
+    for name in ["triangle", "rectangle", "sphere_above", "sphere_horizon"] {
         let scene = analytic_scenes()
             .into_iter()
             .find(|s| s.name == name)

@@ -185,8 +185,9 @@ fn the_three_cases() {
     }
 }
 
-/// Bad input: NaN u, a point inside the sphere, a zero radius, non-finite centres and normals
-/// give pdf 0 and +z; u = 1 and negative u are clamped; nothing is NaN.
+/// Bad input: NaN u, a point inside the sphere, a zero radius, non-finite centres and radii give
+/// pdf 0 and +z; a zero or non-finite normal samples the cone; u = 1 and negative u are clamped;
+/// nothing is NaN.
 #[test]
 fn bad_input() {
     let c = Vec3::new(1.0, 0.5, 2.0);
@@ -201,7 +202,15 @@ fn bad_input() {
             z,
             "{bad}"
         );
-        assert_eq!(projected_cap(Vec2::new(0.3, 0.5), c, 0.5, v), z, "{bad}");
+        // Without a usable normal, the cone: pdf 1/(2π(1 − cos α)) on the cap.
+        let (w, pdf) = projected_cap(Vec2::new(0.3, 0.5), c, 0.5, v);
+        let cone = projected_cap(Vec2::new(0.3, 0.5), c, 0.5, Vec3::ZERO);
+        assert_eq!((w, pdf), cone, "{bad}");
+        let h = mcsample::warp::cone_h_from_sin2(0.25 / c.length_squared());
+        assert!(
+            (pdf * std::f32::consts::TAU * h - 1.0).abs() < 1e-5,
+            "{bad}: {pdf}"
+        );
         assert_eq!(
             projected_cap(Vec2::new(0.3, 0.5), c, bad, Vec3::Z),
             z,
@@ -212,6 +221,35 @@ fn bad_input() {
             0.0
         );
     }
+    // Found by the fuzzer: a sphere 10²⁰ radii away has P ≈ 1e-40, whose cos θ / P overflowed
+    // (now the cone, whose own pdf overflows too: dropped); a subnormal normal has no f32 unit
+    // vector, and gave NaN directions (now the cone).
+    let far = Vec3::new(5.880012e19, 3.689349e19, 2.3058078e18);
+    let (w, pdf) = projected_cap(Vec2::new(0.0, 0.0), far, 0.5, Vec3::splat(0.5));
+    assert_eq!((w, pdf), (Vec3::Z, 0.0));
+    assert!(ProjectedCap::new(far, 0.5, Vec3::splat(0.5)).by_solid_angle());
+    // At a lune's horn (u = (1, 0): depth W at y = −y_c) rounding put the direction just off
+    // the cap, 3e-4 above the horizon: dropped to +z, not kept where it would not invert.
+    let near = Vec3::new(0.0, -8.808098e-5, -4.0267474e-23);
+    let (w, pdf) = projected_cap(Vec2::new(1.0, 0.0), near, 8.045271e-5, Vec3::splat(0.5));
+    assert!(pdf > 0.0 || w == Vec3::Z, "{w} {pdf}");
+    // At the other horn (u = (1, 1)) the lune's width is 0: the inverse divided 0 by it (NaN).
+    let c2 = Vec3::new(48.56861, 204.88766, 195.26274);
+    let n2 = Vec3::new(-1.5099264e-13, 1.5672303e-38, 1.7643896e-38);
+    let cap = ProjectedCap::new(c2, 1.9526274e2, n2);
+    let (w, _) = cap.sample(Vec2::ONE);
+    let back = cap.inverse(w);
+    assert!(
+        back.cmpge(Vec2::ZERO).all() && back.cmple(Vec2::ONE).all(),
+        "{back}"
+    );
+    let subnormal = Vec3::new(9.1834e-41, 0.0, 0.0);
+    let (w, pdf) = projected_cap(Vec2::new(0.3, 0.6), c, 0.5, subnormal);
+    assert_eq!(
+        (w, pdf),
+        projected_cap(Vec2::new(0.3, 0.6), c, 0.5, Vec3::ZERO)
+    );
+    assert!(w.is_finite() && pdf > 0.0);
     for u in [
         Vec2::ONE,
         Vec2::new(-1.0, 2.0),

@@ -177,10 +177,14 @@ impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedSphere<V> {
             zero
         };
         let mut wi = V3::select(self.outside, w_cone, w_area);
-        if let Some(cap) = &self.cap {
-            wi = V3::select(self.by_cap, cap.sample(u).0, wi);
+        // By projected solid angle: the cap's sample and its pdf (the pdf function's value).
+        let mut cap_pdf = None;
+        if let Some(cap) = self.cap.as_ref().filter(|_| self.by_cap.any()) {
+            let (w, pdf) = cap.sample(u);
+            wi = V3::select(self.by_cap, w, wi);
+            cap_pdf = Some(pdf);
         }
-        let (pdf, dist) = self.eval_lanes(wi);
+        let (pdf, dist) = self.eval_with(wi, cap_pdf);
         ShapeSample {
             wi: V::from_lanes(wi),
             pdf,
@@ -218,10 +222,18 @@ impl<V: Point3<Lane = L>, L: Math> PreparedSphere<V> {
         wi.dot(axis).gt(L::ZERO) & s.dot(s).le(self.sin2_bound)
     }
 
-    /// [`PreparedShape::eval`]: from outside, 1/(2πh) inside the cone and the near hit; from
-    /// inside, the converted area pdf and the far hit.
+    /// [`PreparedShape::eval`]: from outside, 1/(2πh) inside the cone (or the cap's pdf) and
+    /// the near hit; from inside, the converted area pdf and the far hit.
     #[inline(always)]
     fn eval_lanes(&self, wi: V3<L>) -> (L, L) {
+        let cap = self.cap.as_ref().filter(|_| self.by_cap.any());
+        self.eval_with(wi, cap.map(|cap| cap.pdf(wi)))
+    }
+
+    /// [`eval_lanes`](Self::eval_lanes) with the cap's pdf at `wi` given (where prepared for
+    /// it).
+    #[inline(always)]
+    fn eval_with(&self, wi: V3<L>, cap_pdf: Option<L>) -> (L, L) {
         let (b, disc) = self.ray(wi);
         let root = disc.max(L::ZERO).sqrt();
         // From outside: the cone's pdf, and the near hit as c0/(b + √disc), with no
@@ -236,7 +248,7 @@ impl<V: Point3<Lane = L>, L: Math> PreparedSphere<V> {
             L::ZERO
         };
         // No lane outside: every lane's cone test is false anyway.
-        let cone = if self.outside.any() {
+        let cone = if (self.outside & !self.by_cap).any() {
             self.outside & self.in_cone(wi)
         } else {
             self.outside
@@ -248,8 +260,8 @@ impl<V: Point3<Lane = L>, L: Math> PreparedSphere<V> {
         );
         let pdf = L::select(self.valid & on & !wi.any_nan(), pdf, L::ZERO);
         // By projected solid angle: the cap's own pdf, 0 below the horizon.
-        let pdf = match &self.cap {
-            Some(cap) => L::select(self.by_cap, cap.pdf(wi), pdf),
+        let pdf = match cap_pdf {
+            Some(cap) => L::select(self.by_cap, cap, pdf),
             None => pdf,
         };
         on_shape(pdf, t)

@@ -105,9 +105,8 @@ type W<L> = <L as Widen>::Wide;
 /// centre).
 #[derive(Clone, Copy)]
 struct Cap<L: Math> {
-    /// The shading frame (Duff's), and the centre's azimuth in it as a unit 2D vector.
+    /// The shading frame, +x towards the centre's azimuth.
     frame: Frame<V3<L>>,
-    azimuth: V2<L>,
     /// cos β, sin β of the centre's elevation; sin α, cos α of the cap's half-angle.
     cx: L,
     cz: L,
@@ -173,18 +172,30 @@ impl<L: Math> Cap<L> {
         );
         let n = n.normalize_scaled();
         let c = center.normalize_scaled();
-        let frame = Frame::from_normal(n);
-        let local = frame.to_local(c);
-        // The centre's azimuth; at the zenith any will do.
+        let duff = Frame::from_normal(n);
+        let local = duff.to_local(c);
+        // The frame turned about n to the centre's azimuth (at the zenith any will do), once
+        // here rather than at every sample.
         let rho = local.x.mul_add(local.x, local.y * local.y).sqrt();
         let on_axis = rho.le(L::ZERO);
-        let azimuth = V2::new(
+        let (ca, sa) = (
             L::select(on_axis, L::ONE, local.x / rho),
             L::select(on_axis, L::ZERO, local.y / rho),
         );
+        let turn = |t: V3<L>, b: V3<L>, c: L, s: L| {
+            V3::new(
+                c.mul_add(t.x, s * b.x),
+                c.mul_add(t.y, s * b.y),
+                c.mul_add(t.z, s * b.z),
+            )
+        };
+        let frame = Frame {
+            t: turn(duff.t, duff.b, ca, sa),
+            b: turn(duff.b, duff.t, ca, -sa),
+            n: duff.n,
+        };
         let mut cap = Cap {
             frame,
-            azimuth,
             cx,
             cz,
             s,
@@ -264,21 +275,16 @@ impl<L: Math> Cap<L> {
         self.w0 * y - chord_deficit(y, y.asin()) + self.a * self.s * chord_deficit(v, v.asin())
     }
 
-    /// Local direction (in the frame rotated to the centre's azimuth) → world.
+    /// Local direction → world.
     #[inline(always)]
     fn world(&self, l: V3<L>) -> V3<L> {
-        let (c, s) = (self.azimuth.x, self.azimuth.y);
-        let x = c.mul_add(l.x, -(s * l.y));
-        let y = s.mul_add(l.x, c * l.y);
-        self.frame.to_world(V3::new(x, y, l.z))
+        self.frame.to_world(l)
     }
 
-    /// World (unit) → local, rotated to the centre's azimuth.
+    /// World (unit) → local.
     #[inline(always)]
     fn local(&self, w: V3<L>) -> V3<L> {
-        let l = self.frame.to_local(w);
-        let (c, s) = (self.azimuth.x, self.azimuth.y);
-        V3::new(c.mul_add(l.x, s * l.y), c.mul_add(l.y, -(s * l.x)), l.z)
+        self.frame.to_local(w)
     }
 
     /// The map on the valid lanes: local direction for clamped u.
@@ -331,9 +337,12 @@ impl<L: Math> Cap<L> {
             let step = (target - self.area_below(y)) / w;
             let step = L::select(w.gt(L::ZERO) & step.is_finite(), step, L::ZERO);
             let next = (y + step).clamp(L::ZERO, self.yc);
-            // A stopped lane keeps its value, so that every lane follows its scalar path.
-            done = done | next.eq(y);
+            // Converged once a step moves y by under 2⁻²¹ of y_c (Newton's next would move it by
+            // about the square of that). A stopped lane keeps its value, so that every lane
+            // follows its scalar path.
+            let small = (next - y).abs().le(self.yc * L::c(1.0 / 2_097_152.0));
             y = L::select(done, y, next);
+            done = done | small;
             if done.all() {
                 break;
             }
@@ -369,13 +378,6 @@ impl<L: Math> Cap<L> {
             u = V2::select(in_ellipse, u, V2::new(u0, u1));
         }
         clamp_u(u)
-    }
-
-    /// n·ω / P where unit ω (world) is on the cap, above the horizon; 0 elsewhere.
-    #[inline(always)]
-    fn pdf(&self, w: V3<L>) -> L {
-        let cos = w.dot(self.n);
-        L::select(self.on_cap(w) & cos.gt(L::ZERO), cos / self.p, L::ZERO)
     }
 
     /// True where unit ω is within the cap, widened by 2ε in sin θ (θ from the centre), as the
@@ -444,7 +446,8 @@ impl<P: Point3<Lane = L>, L: Math> ProjectedCap<P> {
         if c.valid.any() {
             let local = c.sample_local(clamp_u(u));
             horizon = local.z.eq(L::ZERO);
-            w = c.world(local).normalize();
+            // Unit to rounding already: the lift keeps |p|² + z² = 1 in its algebra.
+            w = c.world(local);
         }
         if (!c.valid).any() {
             let wc = c.cone.to_world(uniform_cone(u, c.h));
@@ -472,10 +475,16 @@ impl<P: Point3<Lane = L>, L: Math> ProjectedCap<P> {
     fn pdf_lanes(&self, w: V3<L>) -> L {
         let c = &self.0;
         let w = w.normalize_scaled();
-        let own = c.pdf(w);
+        let on_cap = c.on_cap(w);
+        let cos = w.dot(c.n);
+        let own = L::select(on_cap & cos.gt(L::ZERO), cos / c.p, L::ZERO);
         // The cone's pdf, 0 where it overflows (h below about 4.6e-40), as `uniform_cone_pdf`.
-        let cone = L::c(0.5 / PI) / c.h;
-        let cone = L::select(c.on_cap(w) & cone.is_finite(), cone, L::ZERO);
+        let cone = if (!c.valid).any() {
+            let cone = L::c(0.5 / PI) / c.h;
+            L::select(on_cap & cone.is_finite(), cone, L::ZERO)
+        } else {
+            L::ZERO
+        };
         let pdf = L::select(c.valid, own, cone);
         L::select(c.empty | w.any_nan(), L::ZERO, pdf)
     }

@@ -312,8 +312,9 @@ pub fn direct(rows: &[DirectRow]) -> Table {
          lights sampled by solid angle.\n\
          lights: how every strategy that samples a light samples it (`LightSampling`): solid \
          angle, the bilinear cosine warp, projected solid angle or area for the triangle and \
-         rectangle lights, whose scenes are run in every mode (the sphere and the disk have \
-         their own samplers only).",
+         rectangle lights, whose scenes are run in every mode; solid angle (the cone) or \
+         projected solid angle (the cap) for the sphere lights; the disk by area in every \
+         mode.",
         rows.first().map_or(0, |r| r.run.estimates)
     );
     let head = [

@@ -1,29 +1,39 @@
 //! Light sampling that sees the surface, as a picture: a diffuse floor under a large tilted
-//! rectangle light, rendered at one light sample per pixel in every mode of
-//! `scene::LightSampling`, side by side in one PNG, and each panel's error against a
-//! many-sample rendering printed.
+//! rectangle light and a sphere light near the horizon, rendered at one sample of each light per
+//! pixel in every mode of `scene::LightSampling`, side by side in one PNG, and each panel's error
+//! against a many-sample rendering printed.
 //!
 //! `cargo run --release --example light_sampling -- [--out PATH] [--width W]`
 //! (defaults `light_sampling.png`, 320 pixels per panel). Each pixel is one shading point
 //! estimated by `direct::estimate` with light sampling (`Strategy::LightSolidAngle`, one
-//! sample) in the panel's mode; the reference takes 256 samples by solid angle.
+//! sample) of each light in the panel's mode, the two summed (no light selection, whose own
+//! noise would hide the modes'); the reference takes 256 samples of each by solid angle. The
+//! sphere is sampled by its cone in every mode but the projected one (by its cap).
 
 use std::time::Instant;
 
 use glam::{Vec2, Vec3};
 use mcsample::direct::{self, Config, Lights, ShadingPoint, Strategy};
-use mcsample::scene::{Lambert, Light, LightSampling, RectangleLight};
+use mcsample::scene::{Lambert, Light, LightSampling, RectangleLight, SphereLight};
 use mcsample::seq::{Generator, Sequence};
 
-/// The light: a large rectangle, tilted 27° and low over the floor, so that the floor's cosine
-/// varies by a factor of several across it.
-fn lights() -> [Light; 1] {
-    [Light::from(RectangleLight::new(
-        Vec3::new(-2.0, -1.0, 0.6),
-        Vec3::new(0.0, 2.5, 0.0),
-        Vec3::new(3.0, 0.0, 1.5),
-        Vec3::splat(1.5),
-    ))]
+/// The lights: a large rectangle, tilted 27° and low over the floor, so that the floor's cosine
+/// varies by a factor of several across it; and a sphere low over the floor's right side, whose
+/// cap straddles the horizon of the floor around it.
+fn lights() -> [Light; 2] {
+    [
+        Light::from(RectangleLight::new(
+            Vec3::new(-2.0, -1.0, 0.6),
+            Vec3::new(0.0, 2.5, 0.0),
+            Vec3::new(3.0, 0.0, 1.5),
+            Vec3::splat(1.5),
+        )),
+        Light::from(SphereLight::new(
+            Vec3::new(2.2, 0.6, 0.45),
+            0.4,
+            Vec3::new(3.0, 2.4, 1.6),
+        )),
+    ]
 }
 
 /// A pinhole camera looking down at the floor.
@@ -59,7 +69,7 @@ impl Camera {
 /// The floor's radiance at every pixel centre, from `spp` light samples per pixel in `mode`.
 fn render(mode: LightSampling, w: u32, h: u32, spp: u32, seed: u32) -> Vec<Vec3> {
     let lights = lights();
-    let selection = Lights::uniform(&lights);
+    let selections = lights.each_ref().map(|l| Lights::uniform(core::slice::from_ref(l)));
     let camera = Camera::new();
     let floor = Lambert::new(Vec3::splat(0.8));
     let config = Config::new(spp, 0).with_light_sampling(mode);
@@ -80,21 +90,23 @@ fn render(mode: LightSampling, w: u32, h: u32, spp: u32, seed: u32) -> Vec<Vec3>
                 wo: -d,
             };
             let pixel = py * w + px;
-            let mut samples = Sequence {
-                first: pixel.wrapping_mul(config.samples()),
-                seed,
-                generator: Generator::Independent,
-            };
-            let e = direct::estimate(
-                Strategy::LightSolidAngle,
-                &selection,
-                &floor,
-                at,
-                config,
-                &mut samples,
-                &mut visible,
-            );
-            image[pixel as usize] = e.radiance;
+            for (k, selection) in selections.iter().enumerate() {
+                let mut samples = Sequence {
+                    first: pixel.wrapping_mul(config.samples()),
+                    seed: seed + 7 * k as u32,
+                    generator: Generator::Independent,
+                };
+                let e = direct::estimate(
+                    Strategy::LightSolidAngle,
+                    selection,
+                    &floor,
+                    at,
+                    config,
+                    &mut samples,
+                    &mut visible,
+                );
+                image[pixel as usize] += e.radiance;
+            }
         }
     }
     image
@@ -165,7 +177,7 @@ fn main() {
     writer.write_image_data(&rgb).expect("PNG data");
     let names: Vec<&str> = panels.iter().map(|(m, _)| m.name()).collect();
     println!(
-        "wrote {out}: {} at 1 light sample per pixel, {w}×{h} each, {:.1} s",
+        "wrote {out}: {} at 1 sample of each light per pixel, {w}×{h} each, {:.1} s",
         names.join(" | "),
         t.elapsed().as_secs_f64()
     );

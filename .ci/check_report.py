@@ -43,8 +43,9 @@ for r in report["direct"]:
     b = r["bias_sigma"]
     # A zero-variance estimator (projected light sampling of a Lambertian receiver) has no
     # spread to measure bias in: its mean must then equal the reference to the f32 estimates'
-    # rounding.
-    if abs(r["mean"] - r["reference"]) <= 1e-6 * abs(r["reference"]):
+    # rounding: the estimator sums its 64 samples in f32, and equal terms round alike, by up to
+    # 64 * 2^-24 = 3.8e-6 (measured 1.2e-6 for the sphere's cap).
+    if abs(r["mean"] - r["reference"]) <= 1e-5 * abs(r["reference"]):
         continue
     if b is None:
         unresolved.append(f"{r['scene']}/{r['strategy']}")

@@ -69,7 +69,9 @@ impl Camera {
 /// The floor's radiance at every pixel centre, from `spp` light samples per pixel in `mode`.
 fn render(mode: LightSampling, w: u32, h: u32, spp: u32, seed: u32) -> Vec<Vec3> {
     let lights = lights();
-    let selections = lights.each_ref().map(|l| Lights::uniform(core::slice::from_ref(l)));
+    let selections = lights
+        .each_ref()
+        .map(|l| Lights::uniform(core::slice::from_ref(l)));
     let camera = Camera::new();
     let floor = Lambert::new(Vec3::splat(0.8));
     let config = Config::new(spp, 0).with_light_sampling(mode);

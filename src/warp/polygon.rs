@@ -273,3 +273,37 @@ pub(crate) fn pow2_scale<L: Math>(m: L) -> L {
     }
     scale
 }
+
+/// A vector in the f64 lane of the same width, exactly.
+#[inline(always)]
+pub(crate) fn widen3<L: Math>(p: V3<L>) -> V3<L::Wide> {
+    V3::new(p.x.widen(), p.y.widen(), p.z.widen())
+}
+
+/// A vector rounded to the lane.
+#[inline(always)]
+pub(crate) fn narrow3<L: Math>(p: V3<L::Wide>) -> V3<L> {
+    V3::new(L::narrow(p.x), L::narrow(p.y), L::narrow(p.z))
+}
+
+/// p/|p| in f64 with plain operations.
+#[inline(always)]
+pub(crate) fn unit_wide<T: Lane>(p: V3<T>) -> V3<T> {
+    p.scale(T::ONE / dot3_in(p, p).sqrt())
+}
+
+/// a·b with plain products (no fused multiply-add, which the f64 lanes do not share).
+#[inline(always)]
+pub(crate) fn dot3_in<T: Lane>(a: V3<T>, b: V3<T>) -> T {
+    a.x * b.x + a.y * b.y + a.z * b.z
+}
+
+/// a × b with plain products.
+#[inline(always)]
+pub(crate) fn cross3_in<T: Lane>(a: V3<T>, b: V3<T>) -> V3<T> {
+    V3::new(
+        a.y * b.z - a.z * b.y,
+        a.z * b.x - a.x * b.z,
+        a.x * b.y - a.y * b.x,
+    )
+}

@@ -35,7 +35,7 @@ use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::warp::common::clamp_u;
 use crate::warp::family::{is_unit, lanes3};
-use crate::warp::polygon::EdgePlanes;
+use crate::warp::polygon::{EdgePlanes, cross3_in, dot3_in, narrow3, unit_wide, widen3};
 use crate::warp::{Family, SphericalRectangle, SphericalTriangle};
 
 /// The projected solid angle (irradiance at radiance 1, in units of sr) below which a polygon is
@@ -176,7 +176,7 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         let mut sectors = L::ZERO;
         let mut spread = L::ZERO;
         let mut central = L::ZERO.le(L::ZERO);
-        let heights = g.v.map(|p| dot_in(p, g.n));
+        let heights = g.v.map(|p| dot3_in(p, g.n));
         let slots = clip::<L::Wide, N, K>(g.v, heights);
         let mut p = <L::Wide as Lane>::ZERO;
         let mut wide = [WideEdge::default(); K];
@@ -391,14 +391,14 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         type W<L> = <L as Widen>::Wide;
         let h = widen3(self.frame.to_world(V3::new(d.x, d.y, L::ZERO)));
         let n = self.wide_n;
-        let q = cross_in(n, h);
+        let q = cross3_in(n, h);
         let zero = W::<L>::ZERO;
         let mut full = zero;
         let (mut low_o, mut m_o, mut z_o) = (V3::default(), V3::default(), zero);
         let (mut low_i, mut m_i, mut z_i) = (V3::default(), V3::default(), zero);
         for e in self.wide.iter().take(self.count) {
-            let a_le = dot_in(n, cross_in(e.a, h)).ge(zero);
-            let b_le = dot_in(n, cross_in(e.b, h)).ge(zero);
+            let a_le = dot3_in(n, cross3_in(e.a, h)).ge(zero);
+            let b_le = dot3_in(n, cross3_in(e.b, h)).ge(zero);
             full = full + W::<L>::select(a_le & b_le, e.area, zero);
             let spans = (a_le & !b_le) | (b_le & !a_le);
             let low = V3::select(a_le, e.a, e.b);
@@ -414,10 +414,10 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         }
         // The arc's point in the vertical plane through n and h (normal q), on h's side.
         let part = |low: V3<W<L>>, m: V3<W<L>>, mz: W<L>| {
-            let x = cross_in(m, q);
-            let x = x.scale(W::<L>::ONE.copysign(dot_in(x, h)));
-            let c = cross_in(low, x);
-            W::<L>::HALF * mz * angle_in(dot_in(c, c).sqrt(), dot_in(low, x))
+            let x = cross3_in(m, q);
+            let x = x.scale(W::<L>::ONE.copysign(dot3_in(x, h)));
+            let c = cross3_in(low, x);
+            W::<L>::HALF * mz * angle_in(dot3_in(c, c).sqrt(), dot3_in(low, x))
         };
         full + part(low_o, m_o, z_o) + part(low_i, m_i, z_i)
     }
@@ -672,8 +672,8 @@ impl<L: Math, const N: usize> Wide<L, N> {
     #[inline(always)]
     fn new(v: [V3<L::Wide>; N], n: V3<L>) -> Self {
         let n = widen3(n);
-        let n = n.scale(<L::Wide as Lane>::ONE / dot_in(n, n).sqrt());
-        let det = dot_in(vertex(&v, 0), cross_in(vertex(&v, 1), vertex(&v, 2)));
+        let n = n.scale(<L::Wide as Lane>::ONE / dot3_in(n, n).sqrt());
+        let det = dot3_in(vertex(&v, 0), cross3_in(vertex(&v, 1), vertex(&v, 2)));
         Self {
             v,
             n,
@@ -685,16 +685,16 @@ impl<L: Math, const N: usize> Wide<L, N> {
     #[inline(always)]
     fn edge(&self, a: V3<L::Wide>, b: V3<L::Wide>) -> WideEdge<L::Wide> {
         type W<L> = <L as Widen>::Wide;
-        let m = cross_in(a, b);
-        let len2 = dot_in(m, m);
+        let m = cross3_in(a, b);
+        let len2 = dot3_in(m, m);
         let len = len2.sqrt();
         // An edge shorter than the rounding of its ends' cross product (16 f64 ε of |a||b|) has
         // no plane: it sweeps nothing.
         let noise = W::<L>::c(256.0) * W::<L>::EPSILON * W::<L>::EPSILON;
-        let some = len2.gt(noise * dot_in(a, a) * dot_in(b, b));
+        let some = len2.gt(noise * dot3_in(a, a) * dot3_in(b, b));
         let m = V3::select(some, m.scale(W::<L>::ONE / len), V3::default());
-        let theta = angle_in(len, dot_in(a, b));
-        let mz = dot_in(m, self.n);
+        let theta = angle_in(len, dot3_in(a, b));
+        let mz = dot3_in(m, self.n);
         WideEdge {
             a,
             b,
@@ -714,42 +714,10 @@ impl<L: Math, const N: usize> Wide<L, N> {
             .zip(self.v)
             .zip(self.v.iter().cycle().skip(1))
         {
-            *o = narrow3(unit_wide(cross_in(a, *b)));
+            *o = narrow3(unit_wide(cross3_in(a, *b)));
         }
         out
     }
-}
-
-#[inline(always)]
-fn widen3<L: Math>(p: V3<L>) -> V3<L::Wide> {
-    V3::new(p.x.widen(), p.y.widen(), p.z.widen())
-}
-
-#[inline(always)]
-fn narrow3<L: Math>(p: V3<L::Wide>) -> V3<L> {
-    V3::new(L::narrow(p.x), L::narrow(p.y), L::narrow(p.z))
-}
-
-/// p/|p| in f64 with plain operations.
-#[inline(always)]
-fn unit_wide<T: Lane>(p: V3<T>) -> V3<T> {
-    p.scale(T::ONE / dot_in(p, p).sqrt())
-}
-
-/// a·b with plain products (no fused multiply-add, which the f64 lanes do not share).
-#[inline(always)]
-fn dot_in<T: Lane>(a: V3<T>, b: V3<T>) -> T {
-    a.x * b.x + a.y * b.y + a.z * b.z
-}
-
-/// a × b with plain products.
-#[inline(always)]
-fn cross_in<T: Lane>(a: V3<T>, b: V3<T>) -> V3<T> {
-    V3::new(
-        a.y * b.z - a.z * b.y,
-        a.z * b.x - a.x * b.z,
-        a.x * b.y - a.y * b.x,
-    )
 }
 
 /// The angle θ ∈ [0, π] with sine and cosine proportional to s ≥ 0 and c, from IEEE
@@ -1005,7 +973,7 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         // of a direction is read as the direction (|w| in f64: f32 squares of huge or tiny
         // coordinates would overflow or vanish).
         let (w, n) = (widen3(w), widen3(self.normal));
-        let cos = L::narrow(dot_in(w, n) / (dot_in(n, n) * dot_in(w, w)).sqrt());
+        let cos = L::narrow(dot3_in(w, n) / (dot3_in(n, n) * dot3_in(w, w)).sqrt());
         let unit = narrow3::<L>(unit_wide(w));
         let inside = self.edges.contains(unit) & cos.gt(L::ZERO) & self.valid;
         L::select(inside, cos / self.p, L::ZERO)

@@ -48,6 +48,7 @@ use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::warp::common::{azimuth_fraction, clamp_u};
 use crate::warp::family::{is_unit, lane, lanes3};
+use crate::warp::polygon::{cross3_in, dot3_in, widen3};
 use crate::warp::{Family, cone_h_from_sin2, uniform_cone, uniform_cone_inverse};
 
 /// The largest ratio of the lune's area terms to their sum (its area) for which a cap across
@@ -146,13 +147,13 @@ impl<L: Math> Cap<L> {
         // The scalars of the geometry in f64, where f32 inputs neither overflow nor cancel: sin β
         // of a centre near the horizon, and s² − sin²β, which decides the lune, keep their
         // relative precision.
-        let (d, nw) = (wide3::<L>(center), wide3::<L>(n));
-        let (dd, nn) = (dot_wide(d, d).sqrt(), dot_wide(nw, nw).sqrt());
+        let (d, nw) = (widen3::<L>(center), widen3::<L>(n));
+        let (dd, nn) = (dot3_in(d, d).sqrt(), dot3_in(nw, nw).sqrt());
         let one = W::<L>::ONE;
         let s_w = radius.abs().widen() / dd;
-        let cz_w = dot_wide(d, nw) / (dd * nn);
-        let x = cross_wide(d, nw);
-        let cx_w = dot_wide(x, x).sqrt() / (dd * nn);
+        let cz_w = dot3_in(d, nw) / (dd * nn);
+        let x = cross3_in(d, nw);
+        let cx_w = dot3_in(x, x).sqrt() / (dd * nn);
         let cos_w = (one - s_w * s_w).max(W::<L>::ZERO).sqrt();
         let sigma_w = (s_w - cz_w.abs()) * (s_w + cz_w.abs());
         let q = sigma_w / (cx_w * (cx_w + cos_w));
@@ -620,26 +621,4 @@ impl Family for ProjectedSolidAngleCap {
         let start = c.ellipse / c.p;
         (u.y - start).abs() < 1e-2 || u.y > 1.0 - 1e-2
     }
-}
-
-/// An f32 vector in f64, exactly.
-#[inline(always)]
-fn wide3<L: Math>(p: V3<L>) -> V3<L::Wide> {
-    V3::new(p.x.widen(), p.y.widen(), p.z.widen())
-}
-
-/// a·b with plain products (the f64 lanes have no shared fused multiply-add).
-#[inline(always)]
-fn dot_wide<T: Lane>(a: V3<T>, b: V3<T>) -> T {
-    a.x * b.x + a.y * b.y + a.z * b.z
-}
-
-/// a × b with plain products.
-#[inline(always)]
-fn cross_wide<T: Lane>(a: V3<T>, b: V3<T>) -> V3<T> {
-    V3::new(
-        a.y * b.z - a.z * b.y,
-        a.z * b.x - a.x * b.z,
-        a.x * b.y - a.y * b.x,
-    )
 }

@@ -85,15 +85,18 @@ fn every_strategy_is_unbiased_on_every_reference_scene() {
     }
 }
 
-/// The scenes with a triangle or rectangle light, the shapes that sample by the receiver's
-/// cosine in [`LightSampling::Bilinear`] and [`LightSampling::Projected`].
-fn polygon_scenes() -> Vec<DirectScene> {
+/// The scenes whose lights `mode` changes: those with a triangle or rectangle light (every mode
+/// but solid angle), and in [`LightSampling::Projected`] those with a sphere light too (its
+/// cap), among them the sphere in front of a disk.
+fn mode_scenes(mode: LightSampling) -> Vec<DirectScene> {
     analytic_scenes()
         .into_iter()
         .filter(|s| {
-            s.lights
-                .iter()
-                .any(|l| matches!(l.shape, AnyShape::Triangle(_) | AnyShape::Rectangle(_)))
+            s.lights.iter().any(|l| match l.shape {
+                AnyShape::Triangle(_) | AnyShape::Rectangle(_) => true,
+                AnyShape::Sphere(_) => mode == LightSampling::Projected,
+                _ => false,
+            })
         })
         .collect()
 }
@@ -102,13 +105,23 @@ fn polygon_scenes() -> Vec<DirectScene> {
 fn every_strategy_is_unbiased_in_every_light_sampling_mode() {
     // As above, on the scenes whose lights the modes change: each strategy that samples a light
     // reads the mode's pdf, for its light samples and in the MIS weights of its BSDF samples.
-    let scenes = polygon_scenes();
-    assert!(scenes.len() >= 3, "{} polygon scenes", scenes.len());
     for mode in [
         LightSampling::Bilinear,
         LightSampling::Projected,
         LightSampling::Area,
     ] {
+        let scenes = mode_scenes(mode);
+        let least = if mode == LightSampling::Projected {
+            7
+        } else {
+            3
+        };
+        assert!(
+            scenes.len() >= least,
+            "{} scenes for {}",
+            scenes.len(),
+            mode.name()
+        );
         let config = Config::new(4, 4).with_light_sampling(mode);
         let runs = Strategy::ALL
             .iter()

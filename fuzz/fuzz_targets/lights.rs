@@ -2,14 +2,17 @@
 //! and directions: no panic; pdfs finite and ≥ 0; a kept sample (pdf > 0) has a unit direction,
 //! a finite positive distance equal to `hit` at it, and the pdf function's value bit for bit; a
 //! dropped one has pdf 0, distance ∞ and Le 0; BSDF values are finite and ≥ 0 where the
-//! reflectances are; and the packet form's lanes equal the scalar form bit for bit.
+//! reflectances are; and the packet form's lanes equal the scalar form bit for bit. The same
+//! contract holds for every light prepared with a fuzzed normal in every light-sampling mode
+//! (the sphere's cap and the polygons' cosine-following maps).
 
 #![no_main]
 
 use glam::{Vec2, Vec3};
 use libfuzzer_sys::fuzz_target;
 use mcsample::scene::{
-    DiskLight, Lambert, Light, LightSample, Phong, RectangleLight, SphereLight, TriangleLight,
+    DiskLight, Lambert, Light, LightSample, LightSampling, Phong, RectangleLight, SphereLight,
+    TriangleLight,
 };
 use mcsample::x8::{F32x8, Vec2x8, Vec3x8};
 use mcsample::x16::{F32x16, Vec2x16, Vec3x16};
@@ -90,6 +93,28 @@ fn check_light(l: &Light, p: Vec3, u: Vec2, w: Vec3, name: &str) {
     assert_eq!(a16.pdf.to_array()[15].to_bits(), a.pdf.to_bits(), "{name}: x16 area pdf");
 }
 
+/// The light prepared at p for normal n in `mode`: a kept sample with the pdf function's value
+/// and `hit`'s distance bit for bit, a dropped one with distance ∞ and Le 0, lane 0 of the
+/// packet equal to the scalar.
+fn check_mode(l: &Light, p: Vec3, n: Vec3, u: Vec2, mode: LightSampling, name: &str) {
+    let prepared = l.at_sampling(p, n, mode);
+    let s = prepared.sample(u);
+    let name = format!("{name} {}", mode.name());
+    assert!(s.pdf.is_finite() && s.pdf >= 0.0, "{name}: pdf {s:?}");
+    if s.pdf > 0.0 {
+        assert!(s.wi.is_finite() && s.dist.is_finite() && s.dist >= 0.0, "{name}: {s:?}");
+        assert_eq!(prepared.pdf(s.wi).to_bits(), s.pdf.to_bits(), "{name}: pdf(wi) ≠ sample pdf");
+        assert_eq!(prepared.hit(s.wi).to_bits(), s.dist.to_bits(), "{name}: hit(wi) ≠ dist");
+    } else {
+        assert!(s.dist == f32::INFINITY && s.le == Vec3::ZERO && s.wi.is_finite(), "{name}: dropped {s:?}");
+    }
+    let l8 = splat(l);
+    let s8 = l8.at_sampling(Vec3x8::splat(p), Vec3x8::splat(n), mode).sample(Vec2x8::splat(u));
+    assert_eq!(bits(s8.wi.lane(0)), bits(s.wi), "{name}: packet wi");
+    assert_eq!(s8.pdf.to_array()[0].to_bits(), s.pdf.to_bits(), "{name}: packet pdf");
+    assert_eq!(s8.dist.to_array()[0].to_bits(), s.dist.to_bits(), "{name}: packet dist");
+}
+
 fuzz_target!(|data: &[u8]| {
     let f = floats(data);
     let v = |i: usize| Vec3::new(f[i], f[i + 1], f[i + 2]);
@@ -108,6 +133,9 @@ fuzz_target!(|data: &[u8]| {
     ];
     for (i, l) in lights.iter().enumerate() {
         check_light(l, p, u, w, &format!("light {i}"));
+        for mode in LightSampling::ALL {
+            check_mode(l, p, w, u, mode, &format!("light {i}"));
+        }
     }
 
     // BSDFs in the local frame, with reflectances in [0, 1].

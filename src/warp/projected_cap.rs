@@ -177,8 +177,11 @@ impl<L: Math> Cap<L> {
         let local = duff.to_local(c);
         // The frame turned about n to the centre's azimuth (at the zenith any will do), once
         // here rather than at every sample.
+        // Within 2⁻⁶⁰ of the axis the squares below would fall into f32's subnormals and the
+        // azimuth would not be a unit vector; there the cap is centred to f32 precision anyway.
         let rho = local.x.mul_add(local.x, local.y * local.y).sqrt();
-        let on_axis = rho.le(L::ZERO);
+        let near = local.x.abs().max(local.y.abs());
+        let on_axis = !near.gt(L::c(8.673_617_379_884_035e-19));
         let (ca, sa) = (
             L::select(on_axis, L::ONE, local.x / rho),
             L::select(on_axis, L::ZERO, local.y / rho),

@@ -243,6 +243,12 @@ fn bad_input() {
         back.cmpge(Vec2::ZERO).all() && back.cmple(Vec2::ONE).all(),
         "{back}"
     );
+    // A centre 2e-22 rad from the normal: the azimuth's squares fell into f32's subnormals,
+    // the turned frame was not orthonormal, and the sample 0.4 % off unit length.
+    let c3 = Vec3::new(-24.219606, 2.423e-42, 0.0);
+    let n3 = Vec3::new(-3.5834427e21, 0.5, 0.5);
+    let (w, pdf) = projected_cap(Vec2::new(1.0, 1.5564642e-33), c3, 2.4219238e1, n3);
+    assert!(pdf > 0.0 && (w.length() - 1.0).abs() < 1e-6, "{w} {pdf}");
     let subnormal = Vec3::new(9.1834e-41, 0.0, 0.0);
     let (w, pdf) = projected_cap(Vec2::new(0.3, 0.6), c, 0.5, subnormal);
     assert_eq!(

@@ -726,6 +726,10 @@ impl<P: Point3<Lane = L>, L: Math> SphericalRectangle<P> {
             dx.mul_add(yy, -(dy * xy)) / det,
             dy.mul_add(xx, -(dx * xy)) / det,
         );
+        // A sliver whose Gram system is singular in f32 (0/0, or ∞ − ∞ from edges 10²² times
+        // apart) has no (s, t): it inverts to 0, as documented; NaN in p still gives NaN below.
+        let zero_nan = |v: L| L::select(v.is_nan(), L::ZERO, v);
+        let st = V2::new(zero_nan(st.x), zero_nan(st.y));
         // The oblique coordinates of p − foot, as in `setup`.
         let f = p - s.foot;
         let (xc, yc) = (f.dot(s.xh), f.dot(s.yh));
@@ -821,7 +825,8 @@ pub fn spherical_rectangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, corner: P, ex
 /// [0, 1]².
 ///
 /// Spherically: u₀ is the solid angle of the slab [x0, x] over the whole, u₁ the fraction of the
-/// elevation sine h between the slab's bottom and top edges. By area: p's (s, t). NaN gives NaN,
+/// elevation sine h between the slab's bottom and top edges. By area: p's (s, t) (0 for a sliver
+/// whose 2 × 2 system is singular in f32). NaN gives NaN,
 /// and so does a spherically sampled rectangle larger than [`SPHERICAL_RECTANGLE_INVERSE_REACH`]
 /// times its distance from the shading point.
 #[inline]

@@ -561,3 +561,18 @@ fn a_sliver_parallelograms_area_sample_is_on_the_light() {
         }
     }
 }
+
+/// Found by the fuzzer: a sliver sampled by area (Ω 1e-24: edges 1.7e9 and 2.4e-13 long, 1.7e10
+/// away) whose 2 × 2 Gram system is singular in f32 inverted its own corner to NaN; it now
+/// inverts to a point of the square (0 for the singular coordinate).
+#[test]
+fn singular_sliver_inverts_into_the_square() {
+    let corner = Vec3::new(17179870000.0, -1.214308e-10, -2.3248846e-10);
+    let ex = Vec3::splat(-1734829800.0);
+    let ey = Vec3::new(9.629795e-14, -1.9259594e-13, 9.6297956e-14);
+    let r = SphericalRectangle::new(corner, ex, ey);
+    assert!(r.by_area());
+    let u = r.inverse(corner);
+    assert!(u.cmpge(Vec2::ZERO).all() && u.cmple(Vec2::ONE).all(), "{u}");
+    assert!(r.inverse(Vec3::NAN).is_nan());
+}

@@ -86,6 +86,19 @@ fn chord_deficit<T: Lane>(y: T, asin: T) -> T {
     T::HALF * (y * y * y / (T::ONE + c) - theta_minus_sin(asin, y))
 }
 
+/// The three terms of the lune's area between heights 0 and y: W(0)·y, B(y) and
+/// a·sin α·B(y/sin α) (the area is the first minus the second plus the third), in any lane,
+/// with its arcsine.
+#[inline(always)]
+fn lune_terms<T: Lane>(w0: T, a: T, s: T, y: T, asin: impl Fn(T) -> T) -> [T; 3] {
+    let v = (y / s).min(T::ONE);
+    [
+        w0 * y,
+        chord_deficit(y, asin(y)),
+        a * s * chord_deficit(v, asin(v)),
+    ]
+}
+
 /// arcsine of each f64 lane (libm's).
 #[inline(always)]
 fn asin_wide<T: Lanes<Scalar = f64>>(y: T) -> T {
@@ -224,24 +237,17 @@ impl<L: Math> Cap<L> {
         // a thin lune. Summed in f64 for P (with libm's arcsine, lane by lane: only where some
         // lane has a lune), and in f32 as the solve sums it, where the cancellation bounds the
         // map's accuracy.
-        let vc = (yc / s).min(L::ONE);
-        let (d_disk, d_ellipse) = (
-            chord_deficit(yc, yc.asin()),
-            a * s * chord_deficit(vc, vc.asin()),
-        );
-        let g_end = L::select(lune, w0 * yc - d_disk + d_ellipse, L::ZERO);
-        let spread = (w0 * yc + d_disk + d_ellipse) / g_end;
-        let half = if lune.any() {
+        let (g_end, spread, half) = if lune.any() {
+            let [t0, t1, t2] = lune_terms(w0, a, s, yc, L::asin);
+            let g_end = L::select(lune, t0 - t1 + t2, L::ZERO);
             let lune_w = sigma_w.gt(W::<L>::ZERO);
             let yc = W::<L>::select(lune_w, (q * (W::<L>::TWO - q)).sqrt(), W::<L>::ZERO);
             let w0 = sin_g * sin_g / (one + cos_g);
-            let vc = (yc / s_w).min(one);
-            let a = s_w * cz_w.abs();
-            let deficits =
-                chord_deficit(yc, asin_wide(yc)) - a * s_w * chord_deficit(vc, asin_wide(vc));
-            W::<L>::select(lune_w, w0 * yc - deficits, W::<L>::ZERO)
+            let [h0, h1, h2] = lune_terms(w0, s_w * cz_w.abs(), s_w, yc, asin_wide);
+            let half = W::<L>::select(lune_w, h0 - h1 + h2, W::<L>::ZERO);
+            (g_end, (t0 + t1 + t2) / g_end, half)
         } else {
-            W::<L>::ZERO
+            (L::ZERO, L::ONE, W::<L>::ZERO)
         };
         cap.half = L::narrow(half);
         cap.g_end = g_end;
@@ -275,8 +281,8 @@ impl<L: Math> Cap<L> {
     /// The lune's area between heights 0 and y ∈ [0, y_c].
     #[inline(always)]
     fn area_below(&self, y: L) -> L {
-        let v = (y / self.s).min(L::ONE);
-        self.w0 * y - chord_deficit(y, y.asin()) + self.a * self.s * chord_deficit(v, v.asin())
+        let [t0, t1, t2] = lune_terms(self.w0, self.a, self.s, y, L::asin);
+        t0 - t1 + t2
     }
 
     /// Local direction → world.

@@ -59,6 +59,7 @@ mod projected;
 mod projected_cap;
 mod solid_angle;
 mod sphere;
+mod spherical_ellipse;
 mod spherical_rectangle;
 mod spherical_triangle;
 mod tent;
@@ -99,6 +100,10 @@ pub use projected_cap::{
 };
 pub use solid_angle::{SolidAngleRectangle, SolidAngleTriangle, polygon_size};
 pub use sphere::{UniformSphere, uniform_sphere, uniform_sphere_inverse, uniform_sphere_pdf};
+pub use spherical_ellipse::{
+    ELLIPSE_MIN_SR, SolidAngleDisk, SphericalEllipse, spherical_ellipse, spherical_ellipse_inverse,
+    spherical_ellipse_pdf,
+};
 pub use spherical_rectangle::{
     SPHERICAL_RECTANGLE_INVERSE_REACH, SPHERICAL_RECTANGLE_MAX_SR, SPHERICAL_RECTANGLE_MIN_SR,
     SphericalRectangle, spherical_rectangle, spherical_rectangle_inverse, spherical_rectangle_pdf,

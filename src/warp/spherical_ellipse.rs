@@ -1,0 +1,608 @@
+//! Disk lights sampled by solid angle: directions uniform over the spherical ellipse that a disk
+//! subtends, pdf 1/Ω per steradian (Guillén et al., "Area-Preserving Parameterizations for
+//! Spherical Ellipses", EGSR 2017).
+//!
+//! Seen from the shading point, the disk's rim spans an elliptic cone. With w the unit normal
+//! of the disk's plane towards it, d the distance to the plane and h the offset of the disk's
+//! centre within the plane from the foot of the point, a direction ω = (X, Y, Z) (X along the
+//! offset, Z along w) meets the disk when (dX − hZ)² + d²Y² ≤ r²Z². The quadratic form has the
+//! eigenvalue d² along Y, and in the (X, Z) plane λ₊ ≥ d² and −L < 0; the eigenvector of −L is
+//! the cone's axis, and projected orthographically onto the plane across the axis the cone's
+//! directions fill the ellipse with semi-axes
+//!
+//! a² = L / (d² + L) along Y,  b² = L / (λ₊ + L) across it,
+//!
+//! the sines of the cone's half-angles. The map is polar on that ellipse: u₁ picks the angle φ
+//! (from the major axis) so that the solid angle of the sector [0, φ] is u₁'s share, and u₀ the
+//! angle θ from the axis within the sector's direction, uniformly in 1 − cos θ up to the rim,
+//! 1 − cos θ_max(φ), with sin²θ_max(φ) = r(φ)² = a²b² / (b²cos²φ + a²sin²φ). The solid angle of
+//! the sector of a quarter, φ ∈ [0, π/2], is
+//!
+//! F(φ) = ∫₀^φ (1 − cos θ_max) dφ' = φ − √(1 − a²)·(s R_F(x, y, z) + (m′/3) s³ R_J(x, y, z, 1)),
+//!
+//! with s = sin φ, x = cos²φ, y = 1 + m s², z = 1 + m′ s², m = a²/b² − 1 = (λ₊ − d²)/(d² + L) and
+//! m′ = (a² − b²)/(b²(1 − a²)) = (λ₊ − d²)/d², Carlson's symmetric integrals of the first and
+//! third kind (Carlson, "Numerical computation of real or complex elliptic integrals", Numer.
+//! Algorithms 10, 1995), and Ω = 4F(π/2). Every coefficient is a quotient of the eigenvalues, so
+//! none cancels, and λ₊ − d² is computed as a quotient too. F is a difference of two terms of
+//! size φ, so it loses |F| / φ of its relative precision: F and the solve that inverts it run
+//! in f64, where Ω keeps 1e-9 relative down to 1e-7 sr. Below [`ELLIPSE_MIN_SR`] the disk is
+//! sampled by area instead, where the two densities agree to within the disk's angular size.
+//!
+//! The solve is Newton's on F(φ) = u₁'s share of F(π/2), seeded by the flat ellipse's sector
+//! area (ab/2)·atan(a tan φ / b), which is exact for a small disk, and kept in its bracket by
+//! bisection.
+
+use core::f64::consts::{FRAC_PI_2, PI};
+use core::fmt;
+
+use glam::Vec3;
+
+use crate::frame::Frame;
+use crate::lane::{Lane, Lanes, Mask, V2, V3, Widen};
+use crate::math::Math;
+use crate::point::{Point2, Point3};
+use crate::warp::common::clamp_u;
+use crate::warp::disk::concentric_with_one_minus_r;
+use crate::warp::family::{is_unit, lane, lanes3};
+use crate::warp::polygon::{cross3_in, dot3_in, unit_wide, widen3};
+use crate::warp::{Family, ONE_MINUS_EPS};
+
+/// The smallest solid angle, in steradians, for which a disk is sampled by its spherical
+/// ellipse; below, it is sampled by area. See the module's docs.
+pub const ELLIPSE_MIN_SR: f32 = 1e-7;
+
+/// The f64 lane of the same width as `L`.
+type W<L> = <L as Widen>::Wide;
+
+/// Duplication steps of Carlson's integrals at most (a lane stops once its arguments agree to
+/// 1e-3, where the series' error is below 1e-17; arguments 10³⁰ apart need about 12).
+const CARLSON_STEPS: usize = 40;
+
+/// Newton steps of the angle's solve at most (a lane stops once a step moves φ by under 2⁻³²).
+const SOLVE_STEPS: usize = 24;
+
+/// Each f64 lane through a scalar function (libm's, lane by lane).
+#[inline(always)]
+fn each<T: Lanes<Scalar = f64>>(x: T, f: impl Fn(f64) -> f64) -> T {
+    T::from_fn(|i| f(x.lane(i)))
+}
+
+/// R_C(1, 1 + e) = atan(√e)/√e for e ≥ 0: its series below 1e-3 (error below e⁶/13), libm's
+/// arctangent above, only where some lane needs it.
+#[inline(always)]
+fn rc1<T: Lanes<Scalar = f64>>(e: T) -> T {
+    let mut series = T::c(-1.0 / 11.0);
+    for c in [1.0 / 9.0, -1.0 / 7.0, 1.0 / 5.0, -1.0 / 3.0, 1.0] {
+        series = series * e + T::c(c);
+    }
+    let big = e.ge(T::c(1e-3));
+    if big.any() {
+        let atan = each(e, |e| {
+            let r = libm::sqrt(e);
+            libm::atan(r) / r
+        });
+        T::select(big, atan, series)
+    } else {
+        series
+    }
+}
+
+/// Carlson's R_F(x, y, z) and R_J(x, y, z, 1), for x ∈ [0, 1] and y, z ≥ 1 (so that
+/// (1 − x)(1 − y)(1 − z) ≤ 0 and R_J's R_C terms are arctangents), by their shared duplication.
+#[inline(always)]
+fn carlson<T: Lanes<Scalar = f64>>(x: T, y: T, z: T) -> (T, T) {
+    let mut v = [x, y, z, T::ONE];
+    let mut sum = T::ZERO;
+    let mut f = T::ONE;
+    let spread = |v: &[T; 4]| {
+        let a = (v[0] + v[1] + v[2] + T::TWO * v[3]) * T::c(0.2);
+        let d = v.map(|t| ((a - t) / a).abs());
+        (d[0].max(d[1]).max(d[2]).max(d[3]), a)
+    };
+    let mut done = spread(&v).0.lt(T::c(1e-3));
+    for _ in 0..CARLSON_STEPS {
+        if done.all() {
+            break;
+        }
+        let [sx, sy, sz, sp] = v.map(Lane::sqrt);
+        let lam = sx * (sy + sz) + sy * sz;
+        let d = (sp + sx) * (sp + sy) * (sp + sz);
+        let e = ((v[3] - v[0]) * (v[3] - v[1]) * (v[3] - v[2]) / (d * d)).max(T::ZERO);
+        let next_sum = sum + f * T::c(6.0) / d * rc1(e);
+        sum = T::select(done, sum, next_sum);
+        f = T::select(done, f, f * T::c(0.25));
+        v = v.map(|t| T::select(done, t, (t + lam) * T::c(0.25)));
+        done = done | spread(&v).0.lt(T::c(1e-3));
+    }
+    // The series about the mean, to fifth order in the deviations.
+    let af = (v[0] + v[1] + v[2]) * T::c(1.0 / 3.0);
+    let (dx, dy) = (T::ONE - v[0] / af, T::ONE - v[1] / af);
+    let dz = -(dx + dy);
+    let (e2, e3) = (dx * dy - dz * dz, dx * dy * dz);
+    let rf = (T::ONE - e2 * T::c(0.1) + e3 * T::c(1.0 / 14.0) + e2 * e2 * T::c(1.0 / 24.0)
+        - e2 * e3 * T::c(3.0 / 44.0))
+        / af.sqrt();
+    let (_, a) = spread(&v);
+    let d = v.map(|t| (a - t) / a);
+    let dp = -(d[0] + d[1] + d[2]) * T::HALF;
+    let xyz = d[0] * d[1] * d[2];
+    let e2 = d[0] * d[1] + d[0] * d[2] + d[1] * d[2] - T::c(3.0) * dp * dp;
+    let e3 = xyz + T::TWO * e2 * dp + T::c(4.0) * dp * dp * dp;
+    let e4 = (T::TWO * xyz + e2 * dp + T::c(3.0) * dp * dp * dp) * dp;
+    let e5 = xyz * dp * dp;
+    let t = T::ONE - e2 * T::c(3.0 / 14.0) + e3 * T::c(1.0 / 6.0) + e2 * e2 * T::c(9.0 / 88.0)
+        - e4 * T::c(3.0 / 22.0)
+        - e2 * e3 * T::c(9.0 / 52.0)
+        + e5 * T::c(3.0 / 26.0);
+    (rf, f * t / (a * a.sqrt()) + sum)
+}
+
+/// The shape of the spherical ellipse, in f64: the sines a ≥ b of its half-angles and the
+/// coefficients of F.
+#[derive(Clone, Copy)]
+struct Shape<T> {
+    a2: T,
+    b2: T,
+    /// √(1 − a²), m and m′ of the module's docs.
+    c0: T,
+    m: T,
+    mp: T,
+    /// F(π/2), a quarter of Ω.
+    quarter: T,
+}
+
+impl<T: Lanes<Scalar = f64>> Shape<T> {
+    /// F(φ) for φ ∈ [0, π/2] with s = sin φ, c = cos φ.
+    #[inline(always)]
+    fn area(&self, phi: T, s: T, c: T) -> T {
+        let s2 = s * s;
+        let (rf, rj) = carlson(c * c, T::ONE + self.m * s2, T::ONE + self.mp * s2);
+        phi - self.c0 * s * (rf + self.mp * T::c(1.0 / 3.0) * s2 * rj)
+    }
+
+    /// sin²θ_max(φ) = r(φ)², and F′(φ) = 1 − cos θ_max.
+    #[inline(always)]
+    fn rim(&self, s: T, c: T) -> (T, T) {
+        let r2 = self.a2 * self.b2 / (self.b2 * c * c + self.a2 * s * s);
+        (r2, r2 / (T::ONE + (T::ONE - r2).max(T::ZERO).sqrt()))
+    }
+
+    /// φ ∈ [0, π/2] with F(φ) = t·F(π/2), t ∈ [0, 1], and its sine and cosine.
+    #[inline(always)]
+    fn solve(&self, t: T, active: T::Mask) -> (T, T, T) {
+        let (a, b) = (self.a2.sqrt(), self.b2.sqrt());
+        let target = t * self.quarter;
+        let sincos = |phi: T| {
+            (
+                each(phi, libm::sin),
+                each(phi, libm::cos),
+            )
+        };
+        // The flat ellipse's sector of area share t: exact as the disk shrinks.
+        let (st, ct) = sincos(t * T::c(FRAC_PI_2));
+        let mut phi = each(b * st, |y| y).max(T::ZERO);
+        phi = T::from_fn(|i| libm::atan2(phi.lane(i), (a * ct).lane(i)));
+        let (mut lo, mut hi) = (T::ZERO, T::c(FRAC_PI_2));
+        let mut done = !active;
+        for _ in 0..SOLVE_STEPS {
+            if done.all() {
+                break;
+            }
+            let (s, c) = sincos(phi);
+            let err = self.area(phi, s, c) - target;
+            let (_, slope) = self.rim(s, c);
+            let over = err.gt(T::ZERO);
+            lo = T::select(done | over, lo, phi);
+            hi = T::select(done | !over, hi, phi);
+            let newton = phi - err / slope;
+            let inside = newton.ge(lo) & newton.le(hi);
+            let next = T::select(inside, newton, (lo + hi) * T::HALF);
+            let small = (next - phi).abs().lt(T::c(2.328_306_436_538_696_3e-10));
+            phi = T::select(done, phi, next);
+            done = done | small | err.eq(T::ZERO);
+        }
+        let (s, c) = sincos(phi);
+        (phi, s, c)
+    }
+}
+
+/// The set-up of a disk's spherical ellipse.
+#[derive(Clone, Copy)]
+struct Ellipse<L: Math> {
+    /// The ellipse's frame: t the major axis, b the minor, n the cone's axis.
+    frame: Frame<V3<L>>,
+    /// The shape in f64 (valid lanes only).
+    shape: Shape<W<L>>,
+    /// a and b, and Ω (in f64, rounded).
+    a: L,
+    b: L,
+    omega: L,
+    /// The disk: its centre relative to the point, its frame (n its unit normal), its radius,
+    /// the signed distance c·n and the area pdf 1/(πr²).
+    center: V3<L>,
+    disk: Frame<V3<L>>,
+    r: L,
+    h: L,
+    area_pdf: L,
+    /// Sampled by the ellipse (a disk of at least [`ELLIPSE_MIN_SR`] in front of the point), in
+    /// both lanes.
+    valid: L::Mask,
+    valid_w: <W<L> as Lane>::Mask,
+    /// Nothing to sample: a radius that is not positive and finite, a centre or normal that is
+    /// not finite, a zero normal, or the point in the disk's plane.
+    empty: L::Mask,
+}
+
+impl<L: Math> Ellipse<L> {
+    #[inline(always)]
+    fn new(center: V3<L>, normal: V3<L>, radius: L) -> Self {
+        let zero = W::<L>::ZERO;
+        let (c, nw) = (widen3::<L>(center), widen3::<L>(normal));
+        let n = unit_wide(nw);
+        // Lengths in units of |c|, so that no square overflows or underflows.
+        let cl = dot3_in(c, c).sqrt();
+        let r = radius.widen() / cl;
+        let cu = c.scale(W::<L>::ONE / cl);
+        let cn = dot3_in(cu, n);
+        let d = cn.abs();
+        // w: the plane's normal towards the disk; the offset within the plane and its length.
+        let w = n.scale(W::<L>::ONE.copysign(cn));
+        let off = cu - n.scale(cn);
+        let hl = dot3_in(off, off).sqrt();
+        let (d2, h2, r2) = (d * d, hl * hl, r * r);
+        // The (X, Z) block [[d², −dh], [−dh, h² − r²]]: λ₊ − d² and λ₊ − (h² − r²) are
+        // dh·dh over the sum of the other, so neither cancels.
+        let delta = (d2 - (h2 - r2)) * W::<L>::HALF;
+        let disc = (delta * delta + d2 * h2).sqrt();
+        let big = disc + delta.abs();
+        let q = d2 * h2 / big;
+        let over_d2 = W::<L>::select(delta.ge(zero), q, big);
+        let lp = d2 + over_d2;
+        let l = d2 * r2 / lp;
+        let (a2, b2) = (l / (d2 + l), l / (lp + l));
+        let shape = Shape {
+            a2,
+            b2,
+            c0: d / (d2 + l).sqrt(),
+            m: over_d2 / (d2 + l),
+            mp: over_d2 / d2,
+            quarter: zero,
+        };
+        let one = W::<L>::ONE;
+        let quarter = shape.area(W::<L>::c(FRAC_PI_2), one, zero);
+        let shape = Shape { quarter, ..shape };
+        let omega_w = W::<L>::c(4.0) * quarter;
+        // The frame: e_h along the offset (any direction across w on the axis), the major axis
+        // Y = w × e_h, and in the (e_h, w) plane the axis ∝ (dh, d² + L) and the minor axis
+        // across it.
+        let on_axis = hl.le(zero);
+        let any = Frame::from_normal(narrow_v::<L>(w));
+        let eh_w = W::<L>::ONE / W::<L>::select(on_axis, one, hl);
+        let eh = V3::select(
+            L::narrow_mask(on_axis),
+            any.t,
+            narrow_v::<L>(off.scale(eh_w)),
+        );
+        let ehw = widen3::<L>(eh);
+        let y = cross3_in(w, ehw);
+        let (ax, az) = (d * hl, d2 + l);
+        let norm = one / (ax * ax + az * az).sqrt();
+        let axis = ehw.scale(ax * norm) + w.scale(az * norm);
+        let minor = ehw.scale(az * norm) - w.scale(ax * norm);
+        let frame = Frame {
+            t: narrow_v::<L>(unit_wide(y)),
+            b: narrow_v::<L>(minor),
+            n: narrow_v::<L>(axis),
+        };
+        let nf = narrow_v::<L>(n);
+        let finite = |t: W<L>| t.lt(W::<L>::c(f64::INFINITY));
+        let disk_ok = radius.gt(L::ZERO)
+            & L::narrow_mask(finite(radius.widen()) & finite(cl) & cl.gt(zero) & d.gt(zero))
+            & !nf.any_nan()
+            & !center.any_nan();
+        let area_pdf = L::c(1.0 / PI) / (radius * radius);
+        let empty = !(disk_ok & area_pdf.is_finite());
+        let omega = L::narrow(omega_w);
+        let big_w = omega_w.ge(W::<L>::c(f64::from(ELLIPSE_MIN_SR)));
+        let valid = !empty & L::narrow_mask(big_w);
+        let empty_w = L::select(empty, L::ONE, L::ZERO).widen().gt(zero);
+        let valid_w = big_w & !empty_w;
+        Ellipse {
+            frame,
+            shape,
+            a: L::narrow(a2.sqrt()),
+            b: L::narrow(b2.sqrt()),
+            omega,
+            center,
+            disk: Frame::from_normal(nf),
+            r: radius,
+            h: L::narrow(cn * cl),
+            area_pdf,
+            valid,
+            valid_w,
+            empty,
+        }
+    }
+
+    /// The local direction (in the ellipse's frame) of clamped u, on the valid lanes.
+    #[inline(always)]
+    fn sample_local(&self, u: V2<L>) -> V3<L> {
+        let (one, two, three) = (W::<L>::ONE, W::<L>::TWO, W::<L>::c(3.0));
+        // u₁ in quarters (0 along +major, 1 along +minor, …), the odd ones mirrored so that the
+        // map is continuous across the axes.
+        let t = u.y.widen() * W::<L>::c(4.0);
+        let q = W::<L>::from_fn(|i| libm::floor(t.lane(i))).clamp(W::<L>::ZERO, three);
+        let odd = q.eq(one) | q.eq(three);
+        let f = t - q;
+        let g = W::<L>::select(odd, one - f, f).clamp(W::<L>::ZERO, one);
+        let (_, s, c) = self.shape.solve(g, self.valid_w);
+        let (_, rim) = self.shape.rim(s, c);
+        // 1 − cos θ, uniform up to the rim: no cancellation for a small disk.
+        let k = u.x.widen() * rim;
+        let rho = (k * (two - k)).max(W::<L>::ZERO).sqrt();
+        let sx = W::<L>::select(q.eq(one) | q.eq(two), -one, one);
+        let sy = W::<L>::select(q.ge(two), -one, one);
+        V3::new(
+            L::narrow(rho * c * sx),
+            L::narrow(rho * s * sy),
+            L::narrow(one - k),
+        )
+    }
+
+    /// u of a unit local direction, on the valid lanes.
+    #[inline(always)]
+    fn inverse_local(&self, l: V3<L>) -> V2<L> {
+        let (x, y, z) = (l.x.widen(), l.y.widen(), l.z.widen());
+        let zero = W::<L>::ZERO;
+        let rho2 = x * x + y * y;
+        let rho = rho2.sqrt();
+        let (ax, ay) = (x.abs(), y.abs());
+        let (s, c) = (
+            W::<L>::select(rho.gt(zero), ay / rho, zero),
+            W::<L>::select(rho.gt(zero), ax / rho, W::<L>::ONE),
+        );
+        let phi = W::<L>::from_fn(|i| libm::atan2(ay.lane(i), ax.lane(i)));
+        let g = (self.shape.area(phi, s, c) / self.shape.quarter).clamp(zero, W::<L>::ONE);
+        // Quarters by sign: (+, +) 0, (−, +) 1, (−, −) 2, (+, −) 3; the odd ones mirrored.
+        let (neg_x, neg_y) = (x.lt(zero), y.lt(zero));
+        let odd = (neg_x & !neg_y) | (neg_y & !neg_x);
+        let q = W::<L>::select(neg_y, W::<L>::TWO, zero) + W::<L>::select(odd, W::<L>::ONE, zero);
+        let f = W::<L>::select(odd, W::<L>::ONE - g, g);
+        let u1 = (q + f) * W::<L>::c(0.25);
+        // 1 − cos θ = ρ²/(1 + z), over the rim's.
+        let (_, rim) = self.shape.rim(s, c);
+        let k = W::<L>::select(z.gt(zero), rho2 / (W::<L>::ONE + z), W::<L>::ONE - z);
+        let u0 = W::<L>::select(rim.gt(zero), k / rim, zero);
+        let u = V2::new(L::narrow(u0), L::narrow(u1));
+        V2::new(
+            u.x.clamp(L::ZERO, L::ONE),
+            u.y.clamp(L::ZERO, L::c(f64::from(ONE_MINUS_EPS))),
+        )
+    }
+
+    /// True where unit ω (world) is within the ellipse, widened by 4ε in each semi-axis (in the
+    /// sines of the orthographic projection), in front of the point.
+    #[inline(always)]
+    fn on_ellipse(&self, w: V3<L>) -> L::Mask {
+        let l = self.frame.to_local(w);
+        let slack = L::c(4.0) * L::EPSILON;
+        let (x, y) = (l.x / (self.a + slack), l.y / (self.b + slack));
+        l.z.gt(L::ZERO) & x.mul_add(x, y * y).le(L::ONE)
+    }
+
+    /// The area fallback's pdf per steradian of unit ω: h²/(|ω·n|³ πr²).
+    #[inline(always)]
+    fn area_pdf_of(&self, w: V3<L>) -> L {
+        let cos = w.dot(self.disk.n).abs();
+        let pdf = self.area_pdf * (self.h * self.h) / (cos * cos * cos);
+        L::select(pdf.is_finite(), pdf, L::ZERO)
+    }
+}
+
+/// An f64 vector rounded to the lane.
+#[inline(always)]
+fn narrow_v<L: Math>(p: V3<W<L>>) -> V3<L> {
+    V3::new(L::narrow(p.x), L::narrow(p.y), L::narrow(p.z))
+}
+/// A disk light sampled by solid angle from a shading point: see [`spherical_ellipse`]. The
+/// set-up (the ellipse's frame and shape, Ω in f64) is paid once.
+#[derive(Clone, Copy)]
+pub struct SphericalEllipse<P: Point3>(Ellipse<P::Lane>);
+
+impl<P: Point3<Lane = L>, L: Math> SphericalEllipse<P> {
+    /// The disk of radius `radius` about `center` (relative to the shading point) with normal
+    /// `normal` (any non-zero multiple; either side).
+    #[inline]
+    pub fn new(center: P, normal: P, radius: L) -> Self {
+        Self(Ellipse::new(center.to_lanes(), normal.to_lanes(), radius))
+    }
+
+    /// Ω, the solid angle the disk subtends, in f64 and rounded (0 where there is nothing to
+    /// sample).
+    #[inline]
+    pub fn solid_angle(&self) -> L {
+        L::select(self.0.empty, L::ZERO, self.0.omega)
+    }
+
+    /// The sines a ≥ b of the cone's half-angles along the ellipse's major and minor axes.
+    #[inline]
+    pub fn semi_axes(&self) -> (L, L) {
+        (self.0.a, self.0.b)
+    }
+
+    /// True (lane by lane) where the disk is sampled by area instead: Ω below
+    /// [`ELLIPSE_MIN_SR`], or nothing to sample.
+    #[inline]
+    pub fn by_area(&self) -> L::Mask {
+        !self.0.valid
+    }
+
+    /// See [`spherical_ellipse`].
+    #[inline]
+    pub fn sample(&self, u: P::Vec2) -> (P, L) {
+        let e = &self.0;
+        let u = u.to_lanes();
+        let uc = clamp_u(u);
+        let mut w = V3::default();
+        if e.valid.any() {
+            w = e.frame.to_world(e.sample_local(uc));
+        }
+        let small = !e.valid & !e.empty;
+        if small.any() {
+            let (p, _) = concentric_with_one_minus_r(uc);
+            let on = e.center + (e.disk.t.scale(p.x) + e.disk.b.scale(p.y)).scale(e.r);
+            w = V3::select(e.valid, w, on.normalize_scaled());
+        }
+        let pdf = self.pdf_lanes(w);
+        let dropped = u.any_nan() | e.empty | !pdf.gt(L::ZERO);
+        let w = V3::select(dropped, V3::new(L::ZERO, L::ZERO, L::ONE), w);
+        (P::from_lanes(w), L::select(dropped, L::ZERO, pdf))
+    }
+
+    /// See [`spherical_ellipse_pdf`].
+    #[inline]
+    pub fn pdf(&self, w: P) -> L {
+        self.pdf_lanes(w.to_lanes())
+    }
+
+    #[inline(always)]
+    fn pdf_lanes(&self, w: V3<L>) -> L {
+        let e = &self.0;
+        let w = w.normalize_scaled();
+        let on = e.on_ellipse(w);
+        let pdf = L::select(e.valid, L::ONE / e.omega, e.area_pdf_of(w));
+        L::select(on & !e.empty & !w.any_nan(), pdf, L::ZERO)
+    }
+
+    /// See [`spherical_ellipse_inverse`].
+    #[inline]
+    pub fn inverse(&self, w: P) -> P::Vec2 {
+        let e = &self.0;
+        let w = w.to_lanes();
+        let unit = w.normalize_scaled();
+        let mut u = V2::default();
+        if e.valid.any() {
+            u = e.inverse_local(e.frame.to_local(unit));
+        }
+        let small = !e.valid & !e.empty;
+        if small.any() {
+            // The ray's hit on the plane, relative to the centre, in disk radii.
+            let t = e.h / unit.dot(e.disk.n);
+            let q = unit.scale(t) - e.center;
+            let k = L::ONE / e.r;
+            let p = V2::new(q.dot(e.disk.t) * k, q.dot(e.disk.b) * k);
+            let ua = crate::warp::concentric_disk_inverse(p);
+            u = V2::select(e.valid, u, ua);
+        }
+        P::Vec2::from_lanes(u.nan_where(w.any_nan()))
+    }
+}
+
+/// A direction towards the disk of radius `radius` about `center` (relative to the shading
+/// point) with normal `normal`, uniform in the solid angle Ω it subtends, and its pdf per
+/// steradian 1/Ω. [`spherical_ellipse_pdf`] gives the same number, bit for bit, at the
+/// returned direction.
+///
+/// The map of the module's docs: polar on the disk's spherical ellipse, u₁ the angle (by a
+/// Newton solve of the sector's solid angle, in f64) and u₀ the angle from the cone's axis,
+/// uniform in 1 − cos θ. Both sides of the disk are sampled alike. Where
+/// [`SphericalEllipse::by_area`] (Ω below [`ELLIPSE_MIN_SR`]) the disk is sampled uniformly by
+/// area (the concentric map) instead, with pdf h²/(|ω·n|³ πr²).
+///
+/// u is clamped to [0, 1]². A radius that is not positive and finite (or so small that 1/(πr²)
+/// overflows), a centre or normal that is not finite, a zero normal and a point in the disk's
+/// plane give pdf 0 and direction +z, as NaN in u does.
+#[inline]
+pub fn spherical_ellipse<P: Point2<Lane = L>, L: Math>(
+    u: P,
+    center: P::Vec3,
+    normal: P::Vec3,
+    radius: L,
+) -> (P::Vec3, L) {
+    SphericalEllipse::new(center, normal, radius).sample(u)
+}
+
+/// pdf per steradian that [`spherical_ellipse`] returns direction `w` (any positive multiple):
+/// 1/Ω within the ellipse (its semi-axes widened by 4ε) and in front, else 0 (also for NaN,
+/// and everywhere where there is nothing to sample); h²/(|ω·n|³ πr²) there where the disk is
+/// sampled by area.
+#[inline]
+pub fn spherical_ellipse_pdf<P: Point3<Lane = L>, L: Math>(
+    w: P,
+    center: P,
+    normal: P,
+    radius: L,
+) -> L {
+    SphericalEllipse::new(center, normal, radius).pdf(w)
+}
+
+/// Inverse of [`spherical_ellipse`]: the u that maps to direction `w` (any positive multiple),
+/// clamped to the square. NaN gives NaN.
+#[inline]
+pub fn spherical_ellipse_inverse<P: Point3<Lane = L>, L: Math>(
+    w: P,
+    center: P,
+    normal: P,
+    radius: L,
+) -> P::Vec2 {
+    SphericalEllipse::new(center, normal, radius).inverse(w)
+}
+
+/// The registry's [`spherical_ellipse`]: the disk about `c` with normal `n` and radius `r`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SolidAngleDisk {
+    /// The centre, relative to the shading point.
+    pub c: Vec3,
+    /// The disk's normal.
+    pub n: Vec3,
+    /// The radius.
+    pub r: f32,
+}
+
+impl SolidAngleDisk {
+    /// Which case it is: "circle" (seen along its axis), "ellipse", "thin" (b/a below ¼), or
+    /// "area" where it falls back.
+    pub fn case(&self) -> &'static str {
+        let e = SphericalEllipse::new(self.c, self.n, self.r);
+        let (a, b) = e.semi_axes();
+        if e.by_area() {
+            "area"
+        } else if b == a {
+            "circle"
+        } else if b < 0.25 * a {
+            "thin"
+        } else {
+            "ellipse"
+        }
+    }
+}
+
+impl Family for SolidAngleDisk {
+    fn name(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "spherical_ellipse {}", self.case())
+    }
+    fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
+        let (c, n, r) = (lanes3::<L>(self.c), lanes3::<L>(self.n), lane::<L>(self.r));
+        // Through `black_box`, as the polygons': the set-up is paid at every sample.
+        #[inline(always)]
+        move |u| {
+            let (c, n, r) = core::hint::black_box((c, n, r));
+            spherical_ellipse(u, c, n, r)
+        }
+    }
+    fn pdf<L: Math>(&self, x: V3<L>) -> L {
+        spherical_ellipse_pdf(x, lanes3(self.c), lanes3(self.n), lane(self.r))
+    }
+    fn inverse<L: Math>(&self, x: V3<L>) -> Option<V2<L>> {
+        Some(spherical_ellipse_inverse(
+            x,
+            lanes3(self.c),
+            lanes3(self.n),
+            lane(self.r),
+        ))
+    }
+    fn in_domain(&self, x: Vec3) -> bool {
+        is_unit(x)
+    }
+}

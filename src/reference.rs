@@ -136,3 +136,71 @@ pub fn disk_irradiance_on_axis(radius: f64, height: f64) -> f64 {
     let r2 = radius * radius;
     core::f64::consts::PI * r2 / (r2 + height * height)
 }
+
+/// The solid angle Ω that a disk (centre `center` relative to the point, unit-or-not normal
+/// `normal`, radius `radius`) subtends, by its area integral ∫ h/|q|³ dA (h the distance to the
+/// disk's plane) in polar coordinates about the centre: along the direction e at angle ψ the
+/// radial integral is closed,
+///
+/// h ∫₀^R ρ dρ / |c + ρe|³ = h R² / (√Q (√(|c|²Q) + |c|² + (c·e)R)),  Q = |c + Re|²,
+///
+/// with no cancellation for a small disk (and, where |c|² + (c·e)R < 0, in the form
+/// h (√(|c|²Q) − |c|² − (c·e)R) / (√Q |c × e|²)), and the periodic integral over ψ is the trapezoid rule,
+/// doubled until two agree to 1e-14 (it converges geometrically; at most 2¹⁸ points). A point in
+/// the disk's plane, a radius ≤ 0 or a zero normal give 0; NaN gives NaN.
+pub fn disk_solid_angle(center: V3, normal: V3, radius: f64) -> f64 {
+    use core::f64::consts::TAU;
+    if center.iter().chain(normal.iter()).any(|v| v.is_nan()) || radius.is_nan() {
+        return f64::NAN;
+    }
+    let nl = length(normal);
+    if radius <= 0.0 || nl == 0.0 {
+        return 0.0;
+    }
+    let n = normal.map(|v| v / nl);
+    let h = libm::fabs(dot(center, n));
+    if h == 0.0 {
+        return 0.0;
+    }
+    // Any two unit vectors across n.
+    let helper = if libm::fabs(n[0]) < 0.6 {
+        [1.0, 0.0, 0.0]
+    } else {
+        [0.0, 1.0, 0.0]
+    };
+    let t = cross(n, helper);
+    let tl = length(t);
+    let t = t.map(|v| v / tl);
+    let b = cross(n, t);
+    let a = dot(center, center);
+    let r = radius;
+    let f = |psi: f64| {
+        let (cs, sn) = (libm::cos(psi), libm::sin(psi));
+        let e = [
+            t[0] * cs + b[0] * sn,
+            t[1] * cs + b[1] * sn,
+            t[2] * cs + b[2] * sn,
+        ];
+        let bdot = dot(center, e);
+        let q = r * r + 2.0 * bdot * r + a;
+        let (root, lin) = (sqrt(a * q), a + bdot * r);
+        if lin >= 0.0 {
+            h * r * r / (sqrt(q) * (root + lin))
+        } else {
+            // Where the rim is nearer than the centre's distance, √(|c|²Q) and |c|² + (c·e)R
+            // cancel: multiply through by their difference, which gives R²|c × e|².
+            let x = cross(center, e);
+            h * (root - lin) / (sqrt(q) * dot(x, x))
+        }
+    };
+    let mut m = 64usize;
+    let mut prev = f64::NAN;
+    loop {
+        let s: f64 = (0..m).map(|i| f(TAU * i as f64 / m as f64)).sum::<f64>() * TAU / m as f64;
+        if libm::fabs(s - prev) <= 1e-14 * s || m >= 1 << 18 {
+            return s;
+        }
+        prev = s;
+        m *= 2;
+    }
+}

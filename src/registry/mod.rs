@@ -107,6 +107,12 @@ macro_rules! families {
                 (Vec3::new(2.0, -0.3, -0.4), 1.0, Vec3::Z),
                 (Vec3::new(0.0, 0.0, 30.0), 1.0, TILTED),
             ].map(|(c, r, n)| warp::ProjectedSolidAngleCap { c, r, n });
+            SphericalEllipse: warp::SolidAngleDisk = [
+                (Vec3::new(0.0, 0.0, 2.0), Vec3::NEG_Z, 1.0),
+                (Vec3::new(0.0, 3.0, 3.0), Vec3::NEG_Y, 3.0),
+                (Vec3::new(0.5, 0.2, 2.0), Vec3::new(1.0, 0.0, 0.15), 1.0),
+                (Vec3::new(0.0, 0.0, 30.0), TILTED, 1.0),
+            ].map(|(c, n, r)| warp::SolidAngleDisk { c, n, r });
             Light: LightSampler = LightSampler::REGISTERED;
             BsdfLambert: BsdfLambert = [BsdfLambert { wo: Vec3::new(0.3, -0.2, 0.933_809) }];
             BsdfPhong: BsdfPhong = [

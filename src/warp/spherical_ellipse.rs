@@ -45,7 +45,7 @@ use crate::point::{Point2, Point3};
 use crate::warp::common::clamp_u;
 use crate::warp::disk::concentric_with_one_minus_r;
 use crate::warp::family::{is_unit, lane, lanes3};
-use crate::warp::polygon::{cross3_in, dot3_in, unit_wide, widen3};
+use crate::warp::polygon::{cross3_in, dot_wide, dot3_in, unit_wide, widen3};
 use crate::warp::{Family, ONE_MINUS_EPS};
 
 /// The smallest solid angle, in steradians, for which a disk is sampled by its spherical
@@ -179,12 +179,7 @@ impl<T: Lanes<Scalar = f64>> Shape<T> {
     fn solve(&self, t: T, active: T::Mask) -> (T, T, T) {
         let (a, b) = (self.a2.sqrt(), self.b2.sqrt());
         let target = t * self.quarter;
-        let sincos = |phi: T| {
-            (
-                each(phi, libm::sin),
-                each(phi, libm::cos),
-            )
-        };
+        let sincos = |phi: T| (each(phi, libm::sin), each(phi, libm::cos));
         // The flat ellipse's sector of area share t: exact as the disk shrinks.
         let (st, ct) = sincos(t * T::c(FRAC_PI_2));
         let mut phi = each(b * st, |y| y).max(T::ZERO);
@@ -282,7 +277,11 @@ impl<L: Math> Ellipse<L> {
         // one of 1e-10 in F(π/2) when tol⁶ = 6e-10·F(π/2).
         let tol = each(quarter * W::<L>::c(6e-10), |t| libm::sqrt(libm::cbrt(t)));
         let tol = tol.clamp(W::<L>::c(1e-3), W::<L>::c(0.05));
-        let shape = Shape { quarter, tol, ..shape };
+        let shape = Shape {
+            quarter,
+            tol,
+            ..shape
+        };
         let omega_w = W::<L>::c(4.0) * quarter;
         // The frame: e_h along the offset (any direction across w on the axis), the major axis
         // Y = w × e_h, and in the (e_h, w) plane the axis ∝ (dh, d² + L) and the minor axis
@@ -402,10 +401,12 @@ impl<L: Math> Ellipse<L> {
         l.z.gt(L::ZERO) & x.mul_add(x, y * y).le(L::ONE)
     }
 
-    /// The area fallback's pdf per steradian of unit ω: h²/(|ω·n|³ πr²).
+    /// The area fallback's pdf per steradian of unit ω: h²/(|ω·n|³ πr²), with ω·n in f64 (it
+    /// cancels at grazing angles).
     #[inline(always)]
     fn area_pdf_of(&self, w: V3<L>) -> L {
-        let cos = w.dot(self.disk.n).abs();
+        let n = self.disk.n;
+        let cos = dot_wide([w.x, w.y, w.z], [n.x, n.y, n.z]).abs();
         let pdf = self.area_pdf * (self.h * self.h) / (cos * cos * cos);
         L::select(pdf.is_finite(), pdf, L::ZERO)
     }

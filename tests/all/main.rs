@@ -49,6 +49,8 @@ mod warp {
     #[cfg(not(target_family = "wasm"))]
     mod rectangle_accuracy;
     mod roundtrip;
+    // Disk lights by solid angle: Ω, the disk's samples, χ² and its control, hard cases, lanes.
+    mod spherical_ellipse;
     mod sweep;
 }
 

@@ -30,6 +30,7 @@ mod phong;
 mod projected;
 mod projected_cap;
 mod sphere;
+mod spherical_ellipse;
 mod spherical_rectangle;
 mod spherical_triangle;
 mod tent;
@@ -46,6 +47,7 @@ use super::{Cap, ChiSquare, ChiSquareResult, PlanarLight};
 use crate::scene;
 
 pub use crate::registry::{BsdfLambert, BsdfPhong, LightSampler, Sampler, rectangle, triangle};
+pub use spherical_ellipse::rim as disk_rim;
 
 /// What a sampler gives for NaN in u (and, for the parametrised ones, a NaN parameter).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -421,7 +423,7 @@ impl Sampler {
                 |p: DVec2| pdf(p.extend(0.0).as_vec3()),
             ),
             TestDomain::Cap(cap) => cap.test(
-                ChiSquare::sphere().samples(samples).ires(6),
+                ChiSquare::sphere().samples(samples).ires(12),
                 sample,
                 |w: DVec3| pdf(w.as_vec3()),
             ),

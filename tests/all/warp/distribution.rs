@@ -284,6 +284,7 @@ fn every_pdf_integrates_to_one() {
                 let s2 = (r as f64 / c.as_dvec3().length()).powi(2);
                 Cap::new(c.as_dvec3(), (1.2 * warp::cone_h_from_sin2(s2)).min(2.0))
             }
+            Sampler::SphericalEllipse(d) => Cap::around(&registry::disk_rim(&d)),
             _ => unreachable!(),
         };
         cases.push((s.name(), integrate(cap, |w| s.pdf(w), 3000), 3e-3));

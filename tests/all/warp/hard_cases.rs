@@ -127,7 +127,8 @@ fn warp_case(s: Sampler) -> Warp {
             | Sampler::BilinearTriangle(_)
             | Sampler::ProjectedTriangle(_)
             | Sampler::ProjectedRectangle(_)
-            | Sampler::ProjectedCap(_) => Some(Vec3::Z),
+            | Sampler::ProjectedCap(_)
+            | Sampler::SphericalEllipse(_) => Some(Vec3::Z),
             Sampler::SphericalRectangle(r) => Some(r.v[0]),
             Sampler::BilinearRectangle(r) => Some(r.v[0]),
             _ => None,

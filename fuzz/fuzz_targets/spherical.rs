@@ -14,12 +14,20 @@
 //!   a rectangle beyond `SPHERICAL_RECTANGLE_INVERSE_REACH` times its distance, NaN);
 //! - a dropped sample: pdf 0 at the documented point (+z, or the corner);
 //! - every lane of the packet equal to the scalar form of its variant, bit for bit.
+//!
+//! The disk's spherical ellipse the same way, from the first six floats (centre, normal) and
+//! the radius: eight variants (as given, edge-on within a hair, on its axis, huge, tiny, a point
+//! a hair above a wide disk, far, a radius that is not positive), each checked for Ω finite in
+//! [0, 2π], a kept sample a unit direction with pdf(x) equal to its pdf bit for bit (1/Ω where
+//! the ellipse is sampled), its inverse in [0, 1]², a dropped one at +z with pdf 0, and lanes.
 
 #![no_main]
 
 use glam::{Vec2, Vec3};
 use libfuzzer_sys::fuzz_target;
-use mcsample::warp::{SPHERICAL_RECTANGLE_INVERSE_REACH, SphericalRectangle, SphericalTriangle};
+use mcsample::warp::{
+    SPHERICAL_RECTANGLE_INVERSE_REACH, SphericalEllipse, SphericalRectangle, SphericalTriangle,
+};
 use mcsample::x8::{Vec2x8, Vec3x8};
 use mcsample::x16::{Vec2x16, Vec3x16};
 
@@ -308,6 +316,48 @@ fn check_rectangle(rect: [Vec3; 3], u: Vec2, w: Vec3) -> (Vec3, f32, f32, f32, V
     (x, pdf, omega, r.pdf(w), back)
 }
 
+/// Eight variants of the disk (c, n, r): as given, edge-on within a hair, seen on its axis,
+/// huge, tiny, a point a hair above a wide disk, far, and a radius that is not positive.
+fn disks(c: Vec3, n: Vec3, r: f32, k: [i32; 4]) -> [(Vec3, Vec3, f32); 8] {
+    let hair = pow2(-(k[0] % 60) - 4);
+    let across = n.any_orthonormal_vector();
+    [
+        (c, n, r),
+        (across * c.length().max(1.0) + n * hair, n, r),
+        (n * -c.length(), n, r),
+        (c, n, r * pow2(k[1] % 64)),
+        (c, n, r * pow2(-(k[2] % 64))),
+        (n * hair, n, r.abs().max(1.0) * pow2(k[3] % 16)),
+        (c * pow2(k[1] % 100), n, r),
+        (c, n, -r.abs()),
+    ]
+}
+
+/// One disk's facts, and its results for the lane check.
+fn check_disk((c, n, r): (Vec3, Vec3, f32), u: Vec2, w: Vec3) -> (Vec3, f32, f32, f32, Vec2) {
+    let e = SphericalEllipse::new(c, n, r);
+    let ctx = || format!("disk c {c} n {n} r {r}, u {u}");
+    let omega = e.solid_angle();
+    assert!(
+        omega.is_finite() && (0.0..=std::f32::consts::TAU * 1.000_001).contains(&omega),
+        "{}: Ω {omega}",
+        ctx()
+    );
+    let (x, pdf) = e.sample(u);
+    if pdf > 0.0 {
+        assert!(x.is_finite() && (x.length() - 1.0).abs() < 1e-5, "{}: {x}", ctx());
+        assert_eq!(e.pdf(x).to_bits(), pdf.to_bits(), "{}: pdf(x)", ctx());
+        if !e.by_area() {
+            assert_eq!(pdf, 1.0 / omega, "{}", ctx());
+        }
+        let back = e.inverse(x);
+        assert!(in_unit_square(back), "{}: inverse {back}", ctx());
+    } else {
+        assert_eq!((x, pdf), (Vec3::Z, 0.0), "{}: dropped", ctx());
+    }
+    (x, pdf, omega, e.pdf(w), e.inverse(x))
+}
+
 /// Lane i of each packet result equals the scalar result of variant i.
 fn same_lanes(
     name: &str,
@@ -428,5 +478,30 @@ fuzz_target!(|data: &[u8]| {
         "rectangle x16",
         &rect_results,
         (x16, pdf16.to_array(), r16.solid_angle().to_array(), r16.pdf(Vec3x16::splat(w)).to_array(), r16.inverse(x16)),
+    );
+
+    let ds = disks(v(0), v(3), f[6], k);
+    let disk_results = core::array::from_fn(|i| check_disk(ds[i], u, w));
+    let e8 = SphericalEllipse::new(
+        Vec3x8::from(ds.map(|d| d.0)),
+        Vec3x8::from(ds.map(|d| d.1)),
+        mcsample::x8::F32x8::from(ds.map(|d| d.2)),
+    );
+    let (x8, pdf8) = e8.sample(Vec2x8::splat(u));
+    same_lanes(
+        "disk",
+        &disk_results,
+        (x8, pdf8.to_array(), e8.solid_angle().to_array(), e8.pdf(w8).to_array(), e8.inverse(x8)),
+    );
+    let e16 = SphericalEllipse::new(
+        Vec3x16::from(core::array::from_fn::<Vec3, 16, _>(|i| ds[i % 8].0)),
+        Vec3x16::from(core::array::from_fn::<Vec3, 16, _>(|i| ds[i % 8].1)),
+        mcsample::x16::F32x16::from(core::array::from_fn::<f32, 16, _>(|i| ds[i % 8].2)),
+    );
+    let (x16, pdf16) = e16.sample(Vec2x16::splat(u));
+    same_lanes16(
+        "disk x16",
+        &disk_results,
+        (x16, pdf16.to_array(), e16.solid_angle().to_array(), e16.pdf(Vec3x16::splat(w)).to_array(), e16.inverse(x16)),
     );
 });

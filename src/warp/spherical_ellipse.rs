@@ -282,11 +282,26 @@ impl<L: Math> Ellipse<L> {
             tol,
             ..shape
         };
-        let omega_w = W::<L>::c(4.0) * quarter;
+        // A small ellipse by the series of ∫∫ dA/√(1 − ρ²) over its orthographic image:
+        // πab(1 + (a² + b²)/8 + 3(3a⁴ + 2a²b² + 3b⁴)/64 + O(a⁶)), within 1e-15 relative for
+        // a² < 1e-5, where F(π/2)'s absolute error (some 5e-15) would be 1e-10 of Ω or more.
+        let series = W::<L>::c(PI)
+            * (a2 * b2).sqrt()
+            * (one
+                + (a2 + b2) * W::<L>::c(0.125)
+                + (W::<L>::c(3.0) * (a2 * a2 + b2 * b2) + W::<L>::TWO * a2 * b2)
+                    * W::<L>::c(3.0 / 64.0));
+        let omega_w = W::<L>::select(
+            a2.lt(W::<L>::c(1e-5)),
+            series,
+            W::<L>::c(4.0) * quarter.max(zero),
+        );
         // The frame: e_h along the offset (any direction across w on the axis), the major axis
         // Y = w × e_h, and in the (e_h, w) plane the axis ∝ (dh, d² + L) and the minor axis
         // across it.
-        let on_axis = hl.le(zero);
+        // Within 1e-9 of the axis (in units of |c|) the offset's direction is rounding noise and
+        // the ellipse a circle to 1e-18: any direction across w will do.
+        let on_axis = hl.le(W::<L>::c(1e-9));
         let any = Frame::from_normal(narrow_v::<L>(w));
         let eh_w = W::<L>::ONE / W::<L>::select(on_axis, one, hl);
         let eh = V3::select(
@@ -294,7 +309,9 @@ impl<L: Math> Ellipse<L> {
             any.t,
             narrow_v::<L>(off.scale(eh_w)),
         );
+        // Across w to f64 rounding, so that the frame is orthonormal.
         let ehw = widen3::<L>(eh);
+        let ehw = unit_wide(ehw - w.scale(dot3_in(ehw, w)));
         let y = cross3_in(w, ehw);
         let (ax, az) = (d * hl, d2 + l);
         let norm = one / (ax * ax + az * az).sqrt();
@@ -499,14 +516,31 @@ impl<P: Point3<Lane = L>, L: Math> SphericalEllipse<P> {
         }
         let small = !e.valid & !e.empty;
         if small.any() {
-            // The ray's hit on the plane, relative to the centre, in disk radii.
-            let t = e.h / unit.dot(e.disk.n);
-            let q = unit.scale(t) - e.center;
-            let k = L::ONE / e.r;
-            let p = V2::new(q.dot(e.disk.t) * k, q.dot(e.disk.b) * k);
+            // The ray's hit on the plane relative to the centre, n × (ω × c)/(ω·n), in radii,
+            // in f64 (no product of f32 inputs overflows there); beyond the rim, or at a grazing
+            // ω·n = 0, the rim point in its direction.
+            let (wu, c, n) = (
+                widen3::<L>(unit),
+                widen3::<L>(e.center),
+                widen3::<L>(e.disk.n),
+            );
+            let num = cross3_in(n, cross3_in(wu, c));
+            let den = dot3_in(wu, n) * e.r.widen();
+            let (tw, bw) = (widen3::<L>(e.disk.t), widen3::<L>(e.disk.b));
+            let (px, py) = (dot3_in(num, tw), dot3_in(num, bw));
+            let len = (px * px + py * py).sqrt();
+            let zero = W::<L>::ZERO;
+            let k = W::<L>::select(
+                len.le(den.abs()),
+                W::<L>::ONE / den,
+                W::<L>::select(len.gt(zero), W::<L>::ONE.copysign(den) / len, zero),
+            );
+            let p = V2::new(L::narrow(px * k), L::narrow(py * k));
             let ua = crate::warp::concentric_disk_inverse(p);
             u = V2::select(e.valid, u, ua);
         }
+        // Nothing to sample: every direction inverts to the corner (0, 0).
+        let u = V2::select(e.empty, V2::default(), u);
         P::Vec2::from_lanes(u.nan_where(w.any_nan()))
     }
 }
@@ -550,7 +584,7 @@ pub fn spherical_ellipse_pdf<P: Point3<Lane = L>, L: Math>(
 }
 
 /// Inverse of [`spherical_ellipse`]: the u that maps to direction `w` (any positive multiple),
-/// clamped to the square. NaN gives NaN.
+/// clamped to the square; (0, 0) where there is nothing to sample. NaN gives NaN.
 #[inline]
 pub fn spherical_ellipse_inverse<P: Point3<Lane = L>, L: Math>(
     w: P,

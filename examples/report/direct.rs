@@ -153,17 +153,23 @@ fn x16_vs_x8(scene: &DirectScene, strategy: Strategy, config: DirectConfig, coun
 }
 
 /// The light-sampling modes that change `scene`: all for scenes with a triangle or rectangle
-/// light, solid angle and projected for those with a sphere, solid angle alone for the others
-/// (the disk is sampled by area in every mode).
+/// light; otherwise solid angle, projected where there is a sphere, area where there is a disk.
 fn modes(scene: &DirectScene) -> &'static [LightSampling] {
+    use LightSampling::{Area, Projected, SolidAngle};
     let polygon = |l: &Light| matches!(l.shape, AnyShape::Triangle(_) | AnyShape::Rectangle(_));
     let sphere = |l: &Light| matches!(l.shape, AnyShape::Sphere(_));
+    let disk = |l: &Light| matches!(l.shape, AnyShape::Disk(_));
     if scene.lights.iter().any(polygon) {
-        &LightSampling::ALL
-    } else if scene.lights.iter().any(sphere) {
-        &[LightSampling::SolidAngle, LightSampling::Projected]
-    } else {
-        &[LightSampling::SolidAngle]
+        return &LightSampling::ALL;
+    }
+    match (
+        scene.lights.iter().any(sphere),
+        scene.lights.iter().any(disk),
+    ) {
+        (true, true) => &[SolidAngle, Projected, Area],
+        (true, false) => &[SolidAngle, Projected],
+        (false, true) => &[SolidAngle, Area],
+        (false, false) => &[SolidAngle],
     }
 }
 

@@ -315,7 +315,7 @@ fn prepared(cfg: &Config, samplers: &[Sampler], pts: &[Vec2]) -> Vec<PreparedRow
         let modes: &[LightSampling] = match light.shape {
             AnyShape::Triangle(_) | AnyShape::Rectangle(_) => &LightSampling::ALL,
             AnyShape::Sphere(_) => &[LightSampling::SolidAngle, LightSampling::Projected],
-            _ => &[LightSampling::SolidAngle],
+            AnyShape::Disk(_) => &[LightSampling::SolidAngle, LightSampling::Area],
         };
         let mut plain = f64::NAN;
         for &mode in modes {

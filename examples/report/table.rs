@@ -170,7 +170,7 @@ pub fn prepared(rows: &[PreparedRow]) -> Table {
                 solid angle: a further sample's time over the same light's by solid angle (a \
                 run of its own). The triangle and the rectangle in every light-sampling mode, \
                 the sphere by solid angle (its cone) and projected solid angle (its cap), the \
-                disk by solid angle."
+                disk by solid angle (its spherical ellipse) and by area."
         .to_string();
     let head = [
         "light",
@@ -313,8 +313,8 @@ pub fn direct(rows: &[DirectRow]) -> Table {
          lights: how every strategy that samples a light samples it (`LightSampling`): solid \
          angle, the bilinear cosine warp, projected solid angle or area for the triangle and \
          rectangle lights, whose scenes are run in every mode; solid angle (the cone) or \
-         projected solid angle (the cap) for the sphere lights; the disk by area in every \
-         mode.",
+         projected solid angle (the cap) for the sphere lights; solid angle (the spherical \
+         ellipse) or area for the disk.",
         rows.first().map_or(0, |r| r.run.estimates)
     );
     let head = [

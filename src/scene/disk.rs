@@ -1,4 +1,5 @@
-//! The disk: uniform by area through the concentric map, converted to solid angle.
+//! The disk: uniform in solid angle over its spherical ellipse, or uniform by area through the
+//! concentric map, converted to solid angle.
 
 use core::f64::consts::PI;
 
@@ -8,19 +9,22 @@ use super::emitter::Emitter;
 use super::select::{splat_lane, splat_vec};
 use super::shape::{AreaPoint, LightSampling, PreparedShape, Shape, ShapeSample, on_shape};
 use crate::frame::Frame;
-use crate::lane::{Lane, V2, V3};
+use crate::lane::{Lane, Mask, V2, V3};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
-use crate::warp::concentric_disk;
 use crate::warp::dot_wide;
+use crate::warp::{SphericalEllipse, concentric_disk};
 
 /// A disk of radius `radius` about `center`, facing along `normal` (normalised on use); as a
 /// light ([`DiskLight`](super::DiskLight)) it emits on that side.
 ///
-/// It samples a point uniformly by area through the concentric map (Shirley and Chiu 1997) and
-/// converts to solid angle: pdf t²/(|cos θ_l|·πr²) = h²/(|wi·n|³·πr²) per steradian, with h the
-/// shading point's distance to the disk's plane. wi·n is formed in f64 for the f32 lanes, since
-/// it cancels for a disk seen edge-on and the pdf goes with its cube.
+/// Prepared with [`LightSampling::Area`] it samples a point uniformly by area through the
+/// concentric map (Shirley and Chiu 1997) and converts to solid angle: pdf t²/(|cos θ_l|·πr²) =
+/// h²/(|wi·n|³·πr²) per steradian, with h the shading point's distance to the disk's plane. wi·n
+/// is formed in f64 for the f32 lanes, since it cancels for a disk seen edge-on and the pdf goes
+/// with its cube. In every other mode it samples uniformly in the solid angle Ω of its spherical
+/// ellipse ([`SphericalEllipse`]), pdf 1/Ω, where Ω is at least
+/// [`ELLIPSE_MIN_SR`](crate::warp::ELLIPSE_MIN_SR) (below, by area, where the two agree).
 ///
 /// `pdf` and `hit` call a direction on the disk when its hit point lies within r(1 + 4ε) of the
 /// centre, widened by what a direction error of 2ε (ε the lane's epsilon) does to the hit point:
@@ -81,13 +85,16 @@ pub struct PreparedDisk<V: Point3 = Vec3> {
     /// 1/(πr²), the area pdf.
     area_pdf: V::Lane,
     valid: <V::Lane as Lane>::Mask,
+    /// The spherical ellipse (every mode but [`LightSampling::Area`]), and the lanes it samples.
+    ellipse: Option<SphericalEllipse<V3<V::Lane>>>,
+    by_ellipse: <V::Lane as Lane>::Mask,
 }
 
 impl<V: Point3<Lane = L>, L: Math> Shape<V> for Disk<V> {
     type Prepared = PreparedDisk<V>;
 
     #[inline]
-    fn at(&self, p: V, _n: V, _sampling: LightSampling) -> PreparedDisk<V> {
+    fn at(&self, p: V, _n: V, sampling: LightSampling) -> PreparedDisk<V> {
         let d = self.center.to_lanes() - p.to_lanes();
         let n = self.normal.to_lanes().normalize();
         let r = self.radius;
@@ -97,6 +104,14 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Disk<V> {
             & area_pdf.is_finite()
             & h.abs().gt(L::c(1e-6) * d.length())
             & h.is_finite();
+        let ellipse = match sampling {
+            LightSampling::Area => None,
+            _ => Some(SphericalEllipse::new(d, n, r)),
+        };
+        let by_ellipse = match &ellipse {
+            Some(e) => valid & !e.by_area(),
+            None => L::ZERO.gt(L::ZERO),
+        };
         PreparedDisk {
             d,
             frame: Frame::from_normal(n),
@@ -104,6 +119,8 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Disk<V> {
             h,
             area_pdf,
             valid,
+            ellipse,
+            by_ellipse,
         }
     }
 
@@ -158,8 +175,19 @@ impl<V: Point3<Lane = L>, L: Math> PreparedDisk<V> {
 impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedDisk<V> {
     #[inline]
     fn sample(&self, u: V::Vec2) -> ShapeSample<V> {
-        let wi = (self.d + offset(&self.frame, self.r, u.to_lanes())).normalize_scaled();
+        let mut wi = V3::default();
+        if (!self.by_ellipse).any() {
+            wi = (self.d + offset(&self.frame, self.r, u.to_lanes())).normalize_scaled();
+        }
+        // Where the ellipse drops the sample (NaN u), pdf 0 at its +z.
+        let mut dropped = L::ZERO.gt(L::ZERO);
+        if let Some(e) = self.ellipse.as_ref().filter(|_| self.by_ellipse.any()) {
+            let (w, pdf) = e.sample(u.to_lanes());
+            wi = V3::select(self.by_ellipse, w, wi);
+            dropped = self.by_ellipse & pdf.eq(L::ZERO);
+        }
         let (pdf, dist) = self.eval(V::from_lanes(wi));
+        let pdf = L::select(dropped, L::ZERO, pdf);
         ShapeSample {
             wi: V::from_lanes(wi),
             pdf,
@@ -167,12 +195,17 @@ impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedDisk<V> {
         }
     }
 
-    /// h²/(|wi·n|³·πr²) on the disk, with the distance to its plane.
+    /// 1/Ω (by the ellipse) or h²/(|wi·n|³·πr²) (by area) on the disk, with the distance to its
+    /// plane.
     #[inline(always)]
     fn eval(&self, wi: V) -> (L, L) {
         let (wn, t, on) = self.ray(wi.to_lanes());
         let c = wn.abs();
         let pdf = self.area_pdf * (self.h * self.h) / (c * c * c);
+        let pdf = match &self.ellipse {
+            Some(e) => L::select(self.by_ellipse, L::ONE / e.solid_angle(), pdf),
+            None => pdf,
+        };
         on_shape(L::select(on, pdf, L::ZERO), t)
     }
 

@@ -14,8 +14,8 @@ use crate::point::Point3;
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum LightSampling {
-    /// Uniform in the solid angle (the sphere's cone, the polygons' spherical maps; the disk and
-    /// the tiny polygons by area, converted).
+    /// Uniform in the solid angle (the sphere's cone, the polygons' spherical maps, the disk's
+    /// spherical ellipse; the tiny polygons and disks by area, converted).
     #[default]
     SolidAngle,
     /// The triangle and the rectangle through the bilinear cosine warp
@@ -32,11 +32,11 @@ pub enum LightSampling {
     /// to solid angle (a projected solid angle below
     /// [`PROJECTED_MIN_SR`](crate::warp::PROJECTED_MIN_SR), …). The sphere, from outside, by
     /// its cap's projected solid angle ([`warp::projected_cap`](crate::warp::projected_cap)),
-    /// as exact; the disk keeps its area.
+    /// as exact; the disk keeps solid angle.
     Projected,
     /// The triangle and the parallelogram uniformly by area, the pdf converted to solid angle
-    /// (what renderers without spherical samplers do). The disk is sampled by area in every
-    /// mode; the sphere keeps its cone.
+    /// (what renderers without spherical samplers do), and so is the disk; the sphere keeps its
+    /// cone.
     Area,
 }
 

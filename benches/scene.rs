@@ -22,7 +22,7 @@ use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use glam::Vec3;
-use mcsample::scene::{AnyShape, Lambert, Light, LightSampling, Phong, PowerTable};
+use mcsample::scene::{Lambert, Light, Phong, PowerTable, Shape};
 use mcsample::verify::registry;
 use mcsample::x8::{F32x8, Vec3x8};
 
@@ -97,12 +97,7 @@ fn modes(c: &mut Criterion) {
         let Some(light) = s.scene_light() else {
             continue;
         };
-        let modes: &[LightSampling] = match light.shape {
-            AnyShape::Triangle(_) | AnyShape::Rectangle(_) => &LightSampling::ALL,
-            AnyShape::Sphere(_) => &[LightSampling::SolidAngle, LightSampling::Projected],
-            _ => continue,
-        };
-        for &mode in modes {
+        for &mode in light.shape.modes() {
             let prepared = light.at_sampling(p, n, mode);
             g.bench_function(BenchmarkId::new(s.name(), mode.name()), |bn| {
                 bn.iter(|| {

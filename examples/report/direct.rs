@@ -12,7 +12,7 @@ use std::time::Instant;
 
 use glam::Vec3;
 use mcsample::direct::{self, Config as DirectConfig, ShadingPoint, Strategy};
-use mcsample::scene::{AnyShape, Light, LightSampling};
+use mcsample::scene::{LightSampling, Shape};
 use mcsample::seq::{Generator, Sequence};
 use mcsample::verify::direct::{
     DirectRun, DirectScene, analytic_scenes, grid_scenes, quadrature_scenes, run,
@@ -152,25 +152,13 @@ fn x16_vs_x8(scene: &DirectScene, strategy: Strategy, config: DirectConfig, coun
     med(&mut a) / med(&mut b)
 }
 
-/// The light-sampling modes that change `scene`: all for scenes with a triangle or rectangle
-/// light; otherwise solid angle, projected where there is a sphere, area where there is a disk.
-fn modes(scene: &DirectScene) -> &'static [LightSampling] {
-    use LightSampling::{Area, Projected, SolidAngle};
-    let polygon = |l: &Light| matches!(l.shape, AnyShape::Triangle(_) | AnyShape::Rectangle(_));
-    let sphere = |l: &Light| matches!(l.shape, AnyShape::Sphere(_));
-    let disk = |l: &Light| matches!(l.shape, AnyShape::Disk(_));
-    if scene.lights.iter().any(polygon) {
-        return &LightSampling::ALL;
-    }
-    match (
-        scene.lights.iter().any(sphere),
-        scene.lights.iter().any(disk),
-    ) {
-        (true, true) => &[SolidAngle, Projected, Area],
-        (true, false) => &[SolidAngle, Projected],
-        (false, true) => &[SolidAngle, Area],
-        (false, false) => &[SolidAngle],
-    }
+/// The light-sampling modes that change `scene`: those of any of its lights, in the order of
+/// [`LightSampling::ALL`].
+fn modes(scene: &DirectScene) -> Vec<LightSampling> {
+    LightSampling::ALL
+        .into_iter()
+        .filter(|m| scene.lights.iter().any(|l| l.shape.modes().contains(m)))
+        .collect()
 }
 
 pub fn direct(cfg: &Config) -> Vec<DirectRow> {
@@ -182,8 +170,8 @@ pub fn direct(cfg: &Config) -> Vec<DirectRow> {
     for (k, scene) in scenes.iter().enumerate() {
         let first = rows.len();
         let runs = modes(scene)
-            .iter()
-            .flat_map(|&m| Strategy::ALL.map(|s| (m, s)));
+            .into_iter()
+            .flat_map(|m| Strategy::ALL.map(|s| (m, s)));
         for (mode, strategy) in runs {
             let config = DirectConfig::new(N, N).with_light_sampling(mode);
             let t = Instant::now();

@@ -23,7 +23,7 @@ use std::time::Instant;
 
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use mcsample::lane::{V2, V3};
-use mcsample::scene::{AnyShape, LightSampling};
+use mcsample::scene::{LightSampling, Shape};
 use mcsample::verify::registry::{self, Sampler};
 use mcsample::warp::{
     self, SolidAngleRectangle, SolidAngleTriangle, SphericalRectangle, SphericalTriangle,
@@ -312,13 +312,8 @@ fn prepared(cfg: &Config, samplers: &[Sampler], pts: &[Vec2]) -> Vec<PreparedRow
         let Some(light) = s.scene_light() else {
             continue;
         };
-        let modes: &[LightSampling] = match light.shape {
-            AnyShape::Triangle(_) | AnyShape::Rectangle(_) => &LightSampling::ALL,
-            AnyShape::Sphere(_) => &[LightSampling::SolidAngle, LightSampling::Projected],
-            AnyShape::Disk(_) => &[LightSampling::SolidAngle, LightSampling::Area],
-        };
         let mut plain = f64::NAN;
-        for &mode in modes {
+        for &mode in light.shape.modes() {
             let prepared = light.at_sampling(p, n, mode);
             let (first, further) = time_pair(
                 cfg,

@@ -143,6 +143,11 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Disk<V> {
         let r = self.radius;
         L::c(PI) * r * r
     }
+
+    #[inline]
+    fn modes(&self) -> &'static [LightSampling] {
+        &[LightSampling::SolidAngle, LightSampling::Area]
+    }
 }
 
 impl<V: Point3<Lane = L>, L: Math> PreparedDisk<V> {

@@ -141,6 +141,11 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Rectangle<V> {
     fn area(&self) -> L {
         wide_cross(self.ex.to_lanes(), self.ey.to_lanes()).length()
     }
+
+    #[inline]
+    fn modes(&self) -> &'static [LightSampling] {
+        &LightSampling::ALL
+    }
 }
 
 impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedRectangle<V> {

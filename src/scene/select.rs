@@ -68,6 +68,10 @@ macro_rules! shapes {
             fn area(&self) -> L {
                 match self { $(Self::$name(s) => s.area(),)* }
             }
+            #[inline]
+            fn modes(&self) -> &'static [LightSampling] {
+                match self { $(Self::$name(s) => s.modes(),)* }
+            }
         }
 
         impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for AnyPrepared<V> {

@@ -98,6 +98,9 @@ pub trait Shape<V: Point3>: Copy {
     fn sample_area(&self, u: V::Vec2) -> AreaPoint<V>;
     /// The surface area (the sphere's whole surface).
     fn area(&self) -> V::Lane;
+    /// The light-sampling modes that change how this shape samples (the others fall back to
+    /// [`LightSampling::SolidAngle`]), solid angle first.
+    fn modes(&self) -> &'static [LightSampling];
 }
 
 /// A shape prepared at a shading point.

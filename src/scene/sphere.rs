@@ -154,6 +154,11 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Sphere<V> {
         let r = self.radius;
         L::c(4.0 * PI) * r * r
     }
+
+    #[inline]
+    fn modes(&self) -> &'static [LightSampling] {
+        &[LightSampling::SolidAngle, LightSampling::Projected]
+    }
 }
 
 type Prepared<V> = PreparedSphere<V>;

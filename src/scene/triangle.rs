@@ -140,6 +140,11 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Triangle<V> {
         let [a, b, c] = self.v.map(|x| x.to_lanes());
         wide_cross(b - a, c - a).length() * L::HALF
     }
+
+    #[inline]
+    fn modes(&self) -> &'static [LightSampling] {
+        &LightSampling::ALL
+    }
 }
 
 impl<V: Point3<Lane = L>, L: Math> PreparedTriangle<V> {

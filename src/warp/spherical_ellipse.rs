@@ -30,7 +30,7 @@
 //! up. Below that the disk is sampled by area instead, where the two densities agree to within
 //! the disk's angular size, and Ω of an ellipse whose major sine is below √1e-5 comes from its
 //! series πab(1 + (a² + b²)/8 + …), which does not cancel. Carlson's duplication stops at the
-//! tolerance that keeps F within 1e-10 of F(π/2).
+//! agreement of 1e-3 among its arguments (the series' error is then below 1e-17).
 //!
 //! The map does not evaluate F through Carlson's integrals at every sample. In the ellipse's
 //! parametric angle τ (tan φ = (b/a) tan τ, the rim point (a cos τ, b sin τ)) the sector's
@@ -165,10 +165,11 @@ fn rc1<T: Lanes<Scalar = f64>>(e: T) -> T {
 
 /// Carlson's R_F(x, y, z) and R_J(x, y, z, 1), for x ∈ [0, 1] and y, z ≥ 1 (so that
 /// (1 − x)(1 − y)(1 − z) ≤ 0 and R_J's R_C terms are arctangents), by their shared duplication,
-/// until the arguments agree with their mean to `tol` (the series' relative error is then
-/// about tol⁶/10).
+/// until the arguments agree with their mean to 1e-3 (the series' relative error is then below
+/// 1e-17).
 #[inline(always)]
-fn carlson<T: Lanes<Scalar = f64>>(x: T, y: T, z: T, tol: T) -> (T, T) {
+fn carlson<T: Lanes<Scalar = f64>>(x: T, y: T, z: T) -> (T, T) {
+    let tol = T::c(1e-3);
     let mut v = [x, y, z, T::ONE];
     let mut sum = T::ZERO;
     let mut f = T::ONE;
@@ -226,8 +227,6 @@ struct Shape<T> {
     c0: T,
     m: T,
     mp: T,
-    /// The tolerance of Carlson's duplication for F within 1e-10 of F(π/2).
-    tol: T,
     /// F at the knots τ_k = kπ/16 of the parametric angle (tan φ = (b/a) tan τ), k = 0..=8, and
     /// dτ/dF there: the table of the seed.
     knots: [T; KNOTS + 1],
@@ -239,7 +238,7 @@ impl<T: Lanes<Scalar = f64>> Shape<T> {
     #[inline(always)]
     fn area(&self, phi: T, s: T, c: T) -> T {
         let s2 = s * s;
-        let (rf, rj) = carlson(c * c, T::ONE + self.m * s2, T::ONE + self.mp * s2, self.tol);
+        let (rf, rj) = carlson(c * c, T::ONE + self.m * s2, T::ONE + self.mp * s2);
         phi - self.c0 * s * (rf + self.mp * T::c(1.0 / 3.0) * s2 * rj)
     }
 
@@ -415,23 +414,17 @@ impl<L: Math> Ellipse<L> {
         let lp = d2 + over_d2;
         let l = d2 * r2 / lp;
         let (a2, b2) = (l / (d2 + l), l / (lp + l));
-        let shape = Shape {
+        let mut shape = Shape {
             a2,
             b2,
             c0: d / (d2 + l).sqrt(),
             m: over_d2 / (d2 + l),
             mp: over_d2 / d2,
-            tol: W::<L>::c(1e-3),
             knots: [zero; KNOTS + 1],
             slopes: [zero; KNOTS + 1],
         };
         let one = W::<L>::ONE;
         let quarter = shape.area(W::<L>::c(FRAC_PI_2), one, zero);
-        // F is a difference of terms of size φ ≤ π/2: an error of tol⁶/10 relative in them is
-        // one of 1e-10 in F(π/2) when tol⁶ = 6e-10·F(π/2).
-        let tol = each(quarter * W::<L>::c(6e-10), |t| libm::sqrt(libm::cbrt(t)));
-        let tol = tol.clamp(W::<L>::c(1e-3), W::<L>::c(0.05));
-        let mut shape = Shape { tol, ..shape };
         shape.tabulate();
         // A small ellipse by the series of ∫∫ dA/√(1 − ρ²) over its orthographic image:
         // πab(1 + (a² + b²)/8 + 3(3a⁴ + 2a²b² + 3b⁴)/64 + O(a⁶)), within 1e-15 relative for

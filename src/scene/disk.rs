@@ -184,12 +184,14 @@ impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedDisk<V> {
         if (!self.by_ellipse).any() {
             wi = (self.d + offset(&self.frame, self.r, u.to_lanes())).normalize_scaled();
         }
-        // Where the ellipse drops the sample (NaN u), pdf 0 at its +z.
+        // Where the ellipse drops the sample (NaN u), pdf 0 at +z; elsewhere the disk's own
+        // hit test (in `eval`) decides, as for any direction.
         let mut dropped = L::ZERO.gt(L::ZERO);
         if let Some(e) = self.ellipse.as_ref().filter(|_| self.by_ellipse.any()) {
-            let (w, pdf) = e.sample(u.to_lanes());
+            let (w, nan) = e.direction(u.to_lanes());
+            let w = V3::select(nan, V3::new(L::ZERO, L::ZERO, L::ONE), w);
             wi = V3::select(self.by_ellipse, w, wi);
-            dropped = self.by_ellipse & pdf.eq(L::ZERO);
+            dropped = self.by_ellipse & nan;
         }
         let (pdf, dist) = self.eval(V::from_lanes(wi));
         let pdf = L::select(dropped, L::ZERO, pdf);

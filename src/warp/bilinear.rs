@@ -69,9 +69,11 @@ pub fn linear_inverse<L: Math>(x: L, a: L, b: L) -> L {
 }
 
 /// The square → the square with density 4·bilerp(x, y) / Σw, bilinear in the corner weights
-/// `w` = [w₀₀, w₁₀, w₀₁, w₁₁] (w_xy the weight at corner (x, y)): y from its linear marginal
-/// with ends (w₀₀ + w₁₀, w₀₁ + w₁₁), then x from the linear conditional at that y. Equal weights
-/// give the identity, bit for bit.
+/// `w` = [w₀₀, w₁₀, w₀₁, w₁₁] (w_xy the weight at corner (x, y)): x from its linear marginal
+/// with ends (w₀₀ + w₀₁, w₁₀ + w₁₁), then y from the linear conditional at that x. (x first:
+/// the spherical maps start their longest chain from u₀, which is then ready one square root
+/// and one division earlier, while y is formed beside it.) Equal weights give the identity,
+/// bit for bit.
 ///
 /// The weights are positive and finite, at any scale: only their ratios matter, and they are
 /// first scaled by a power of two (exactly) so that their squares stay in range; a weight below
@@ -101,10 +103,68 @@ fn admissible<L: Math>(w: [L; 4]) -> [L; 4] {
 
 #[inline(always)]
 fn bilinear_lanes<L: Math>(u: V2<L>, w: [L; 4]) -> V2<L> {
-    let [w00, w10, w01, w11] = w;
-    let y = linear(u.y, w00 + w10, w01 + w11);
-    let x = linear(u.x, lerp(y, w00, w01), lerp(y, w10, w11));
-    V2::new(x, y)
+    Warp::new(w).sample(u)
+}
+
+/// The bilinear warp for weights already [`admissible`], with its marginal's constants formed
+/// once: what a light prepared at a shading point keeps.
+#[derive(Clone, Copy)]
+struct Warp<L> {
+    w: [L; 4],
+    /// The marginal's ends a = w₀₀ + w₀₁ and b = w₁₀ + w₁₁, a + b, a² and b² − a² (the root of
+    /// [`linear`]), and Σw.
+    a: L,
+    b: L,
+    ab: L,
+    a2: L,
+    d2: L,
+    sum: L,
+}
+
+impl<L: Math> Warp<L> {
+    #[inline(always)]
+    fn new(w: [L; 4]) -> Self {
+        let [w00, w10, w01, w11] = w;
+        let (a, b) = (w00 + w01, w10 + w11);
+        Self {
+            w,
+            a,
+            b,
+            ab: a + b,
+            a2: a * a,
+            d2: b.mul_add(b, -(a * a)),
+            sum: (w00 + w10) + (w01 + w11),
+        }
+    }
+
+    /// [`linear`] for the marginal, then for the conditional.
+    #[inline(always)]
+    fn sample(&self, u: V2<L>) -> V2<L> {
+        let [w00, w10, w01, w11] = self.w;
+        let ux = clamp01(u.x);
+        let root = ux.mul_add(self.d2, self.a2).sqrt();
+        let x = L::ONE.min(ux * (self.ab / (self.a + root)));
+        V2::new(x, linear(u.y, lerp(x, w00, w10), lerp(x, w01, w11)))
+    }
+
+    /// 4·bilerp(x, y)/Σw in the square, else 0 (also for NaN): the conditional's ends at x,
+    /// then y between them.
+    #[inline(always)]
+    fn pdf(&self, p: V2<L>) -> L {
+        let [w00, w10, w01, w11] = self.w;
+        let inside = p.x.ge(L::ZERO) & p.x.le(L::ONE) & p.y.ge(L::ZERO) & p.y.le(L::ONE);
+        let density = lerp(p.y, lerp(p.x, w00, w10), lerp(p.x, w01, w11));
+        L::select(inside, L::c(4.0) * density / self.sum, L::ZERO)
+    }
+
+    /// Each coordinate through [`linear_inverse`], x first.
+    #[inline(always)]
+    fn inverse(&self, p: V2<L>) -> V2<L> {
+        let [w00, w10, w01, w11] = self.w;
+        let p = clamp_u(p);
+        let y = linear_inverse(p.y, lerp(p.x, w00, w10), lerp(p.x, w01, w11));
+        V2::new(linear_inverse(p.x, self.a, self.b), y)
+    }
 }
 
 /// pdf of [`bilinear`] per unit area: 4·bilerp(x, y) / Σw on [0, 1]², else 0 (also for NaN).
@@ -118,14 +178,10 @@ pub fn bilinear_pdf<P: Point2<Lane = L>, L: Math>(p: P, w: [L; 4]) -> L {
 
 #[inline(always)]
 fn bilinear_pdf_lanes<L: Math>(p: V2<L>, w: [L; 4]) -> L {
-    let [w00, w10, w01, w11] = w;
-    let inside = p.x.ge(L::ZERO) & p.x.le(L::ONE) & p.y.ge(L::ZERO) & p.y.le(L::ONE);
-    let density = lerp(p.x, lerp(p.y, w00, w01), lerp(p.y, w10, w11));
-    let sum = (w00 + w10) + (w01 + w11);
-    L::select(inside, L::c(4.0) * density / sum, L::ZERO)
+    Warp::new(w).pdf(p)
 }
 
-/// Inverse of [`bilinear`]: each coordinate through [`linear_inverse`], y first. p is clamped
+/// Inverse of [`bilinear`]: each coordinate through [`linear_inverse`], x first. p is clamped
 /// to [0, 1]²; NaN gives the canonical NaN, as in [`bilinear`].
 #[inline(always)]
 pub fn bilinear_inverse<P: Point2<Lane = L>, L: Math>(p: P, w: [L; 4]) -> P {
@@ -134,10 +190,7 @@ pub fn bilinear_inverse<P: Point2<Lane = L>, L: Math>(p: P, w: [L; 4]) -> P {
 
 #[inline(always)]
 fn bilinear_inverse_lanes<L: Math>(p: V2<L>, w: [L; 4]) -> V2<L> {
-    let [w00, w10, w01, w11] = w;
-    let p = clamp_u(p);
-    let x = linear_inverse(p.x, lerp(p.y, w00, w01), lerp(p.y, w10, w11));
-    V2::new(x, linear_inverse(p.y, w00 + w10, w01 + w11))
+    Warp::new(w).inverse(p)
 }
 
 /// The corner weights max(0.01, n·ω̂) for the unit directions `corners` where the square's
@@ -168,10 +221,10 @@ fn all_equal<L: Math>(w: [L; 4]) -> L::Mask {
 #[inline(always)]
 fn sample_through<L: Math>(
     u: V2<L>,
-    w: [L; 4],
+    w: &Warp<L>,
     base: impl FnOnce(V2<L>) -> (V3<L>, L),
 ) -> (V3<L>, L) {
-    let v = bilinear_lanes(clamp_u(u), w);
+    let v = w.sample(clamp_u(u));
     let (x, p) = base(v);
     (x, compose(p, v, w))
 }
@@ -181,8 +234,8 @@ fn sample_through<L: Math>(
 /// square, and where the inverse failed (NaN `v`) it counts as 1, so that the pdf is positive
 /// exactly where the spherical one is.
 #[inline(always)]
-fn compose<L: Math>(p: L, v: V2<L>, w: [L; 4]) -> L {
-    let d = bilinear_pdf_lanes(v, w);
+fn compose<L: Math>(p: L, v: V2<L>, w: &Warp<L>) -> L {
+    let d = w.pdf(v);
     L::select(
         p.gt(L::ZERO),
         p * L::select(d.gt(L::ZERO), d, L::ONE),
@@ -217,7 +270,7 @@ fn compose<L: Math>(p: L, v: V2<L>, w: [L; 4]) -> L {
 #[derive(Clone, Copy)]
 pub struct BilinearTriangle<P: Point3> {
     base: SphericalTriangle<P>,
-    w: [P::Lane; 4],
+    w: Warp<P::Lane>,
     /// True where the weights are equal: the plain map, whose pdf needs no inverse.
     plain: <P::Lane as Lane>::Mask,
 }
@@ -231,7 +284,7 @@ impl<P: Point3<Lane = L>, L: Math> BilinearTriangle<P> {
         let w = cosine_weights(base.square_corners(), n.to_lanes(), base.by_area());
         Self {
             base,
-            w,
+            w: Warp::new(w),
             plain: all_equal(w),
         }
     }
@@ -245,7 +298,7 @@ impl<P: Point3<Lane = L>, L: Math> BilinearTriangle<P> {
     /// The corner weights [w₀₀, w₁₀, w₀₁, w₁₁] of the bilinear warp.
     #[inline]
     pub fn weights(&self) -> [L; 4] {
-        self.w
+        self.w.w
     }
 
     /// See [`bilinear_triangle`].
@@ -254,8 +307,8 @@ impl<P: Point3<Lane = L>, L: Math> BilinearTriangle<P> {
         if self.plain.all() {
             return self.base.sample(u);
         }
-        let (w, pdf) = sample_through(u.to_lanes(), self.w, |v| {
-            let (w, p) = self.base.sample(P::Vec2::from_lanes(v));
+        let (w, pdf) = sample_through(u.to_lanes(), &self.w, |v| {
+            let (w, p) = self.base.sample_inline(P::Vec2::from_lanes(v));
             (w.to_lanes(), p)
         });
         (P::from_lanes(w), pdf)
@@ -267,16 +320,13 @@ impl<P: Point3<Lane = L>, L: Math> BilinearTriangle<P> {
         if self.plain.all() {
             return self.base.pdf(w);
         }
-        compose(self.base.pdf(w), self.base.inverse(w).to_lanes(), self.w)
+        compose(self.base.pdf(w), self.base.inverse(w).to_lanes(), &self.w)
     }
 
     /// See [`bilinear_triangle_inverse`].
     #[inline]
     pub fn inverse(&self, w: P) -> P::Vec2 {
-        P::Vec2::from_lanes(bilinear_inverse_lanes(
-            self.base.inverse(w).to_lanes(),
-            self.w,
-        ))
+        P::Vec2::from_lanes(self.w.inverse(self.base.inverse(w).to_lanes()))
     }
 }
 
@@ -334,7 +384,7 @@ pub fn bilinear_triangle_inverse<P: Point3<Lane = L>, L: Math>(
 #[derive(Clone, Copy)]
 pub struct BilinearRectangle<P: Point3> {
     base: SphericalRectangle<P>,
-    w: [P::Lane; 4],
+    w: Warp<P::Lane>,
     /// True where the weights are equal, as for the triangle.
     plain: <P::Lane as Lane>::Mask,
 }
@@ -352,7 +402,7 @@ impl<P: Point3<Lane = L>, L: Math> BilinearRectangle<P> {
         let w = cosine_weights(base.square_corners(), n.to_lanes(), plain);
         Self {
             base,
-            w,
+            w: Warp::new(w),
             plain: all_equal(w),
         }
     }
@@ -366,7 +416,7 @@ impl<P: Point3<Lane = L>, L: Math> BilinearRectangle<P> {
     /// The corner weights [w₀₀, w₁₀, w₀₁, w₁₁] of the bilinear warp.
     #[inline]
     pub fn weights(&self) -> [L; 4] {
-        self.w
+        self.w.w
     }
 
     /// See [`bilinear_rectangle`].
@@ -375,7 +425,7 @@ impl<P: Point3<Lane = L>, L: Math> BilinearRectangle<P> {
         if self.plain.all() {
             return self.base.sample(u);
         }
-        let (p, pdf) = sample_through(u.to_lanes(), self.w, |v| {
+        let (p, pdf) = sample_through(u.to_lanes(), &self.w, |v| {
             let (p, pdf) = self.base.sample(P::Vec2::from_lanes(v));
             (p.to_lanes(), pdf)
         });
@@ -393,17 +443,14 @@ impl<P: Point3<Lane = L>, L: Math> BilinearRectangle<P> {
         compose(
             self.base.pdf(p),
             self.base.inverse(on_plane).to_lanes(),
-            self.w,
+            &self.w,
         )
     }
 
     /// See [`bilinear_rectangle_inverse`].
     #[inline]
     pub fn inverse(&self, p: P) -> P::Vec2 {
-        P::Vec2::from_lanes(bilinear_inverse_lanes(
-            self.base.inverse(p).to_lanes(),
-            self.w,
-        ))
+        P::Vec2::from_lanes(self.w.inverse(self.base.inverse(p).to_lanes()))
     }
 }
 

@@ -308,7 +308,7 @@ impl<P: Point3<Lane = L>, L: Math> BilinearTriangle<P> {
             return self.base.sample(u);
         }
         let (w, pdf) = sample_through(u.to_lanes(), &self.w, |v| {
-            let (w, p) = self.base.sample_inline(P::Vec2::from_lanes(v));
+            let (w, p) = self.base.sample(P::Vec2::from_lanes(v));
             (w.to_lanes(), p)
         });
         (P::from_lanes(w), pdf)

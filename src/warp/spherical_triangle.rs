@@ -380,14 +380,6 @@ impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
     /// See [`spherical_triangle`].
     #[inline]
     pub fn sample(&self, u: P::Vec2) -> (P, L) {
-        self.sample_inline(u)
-    }
-
-    /// [`sample`](Self::sample), always inlined: for the bilinear warp in front of it, whose
-    /// chain then overlaps the map's (called, the map waited for the whole warp; inlined
-    /// everywhere, the plain sampler's loops were slower).
-    #[inline(always)]
-    pub(crate) fn sample_inline(&self, u: P::Vec2) -> (P, L) {
         let s = &self.s;
         let u = clamp_u(u.to_lanes());
         // Each path only where some lane takes it: the choice is the triangle's, so the branch

@@ -110,6 +110,14 @@ struct Sector<L: Widen> {
     /// greatest azimuth can be a vertex on the horizon, where a sample has no density).
     fix: L,
     fix_rate: L,
+    /// The seed's model (see [`Sector::seed`]): the outer arc's point at the start and its
+    /// chord to the end, the outer and inner arcs' areas over the sector, and ρ, where the
+    /// inner chord meets the direction along the outer one.
+    chord_a: V2<L>,
+    chord_e: V2<L>,
+    area_o: L,
+    area_i: L,
+    rho: L,
     /// The outer and the inner edge: plane normal (local) and low end.
     outer: (V3<L>, V3<L>),
     inner: (V3<L>, V3<L>),
@@ -140,6 +148,11 @@ impl<L: Math> Sector<L> {
             f1: L::select(m, a.f1, b.f1),
             fix: L::select(m, a.fix, b.fix),
             fix_rate: L::select(m, a.fix_rate, b.fix_rate),
+            chord_a: V2::select(m, a.chord_a, b.chord_a),
+            chord_e: V2::select(m, a.chord_e, b.chord_e),
+            area_o: L::select(m, a.area_o, b.area_o),
+            area_i: L::select(m, a.area_i, b.area_i),
+            rho: L::select(m, a.rho, b.rho),
             outer: (
                 V3::select(m, a.outer.0, b.outer.0),
                 V3::select(m, a.outer.1, b.outer.1),
@@ -166,6 +179,33 @@ impl<L: Math> Sector<L> {
     #[inline(always)]
     fn swept_at(&self, psi: L, d: V2<L>) -> L {
         self.swept(d) + self.fix_rate.mul_add(psi, self.fix)
+    }
+
+    /// The angle ψ where F reaches `target` with the arcs replaced by their chords, each
+    /// scaled to its arc's area: along the outer chord A + τE the outer area grows as τ·A_o,
+    /// and the inner chord is met at σ = τ/(ρ + (1 − ρ)τ), where the inner area is σ·A_i, so
+    /// that A_o·τ + A_i·σ = target − F₀ is a quadratic in τ. Exact at both ends and for a
+    /// sector of straight edges; the arcs' bulge, of the order of the sector's width squared,
+    /// is what the Newton steps remove.
+    #[inline(always)]
+    fn seed(&self, target: L) -> L {
+        let t = (target - self.f0).max(L::ZERO);
+        let (ao, ai, rho) = (self.area_o, self.area_i, self.rho);
+        let a = ao * (L::ONE - rho);
+        let b = ao.mul_add(rho, ai) - t * (L::ONE - rho);
+        let c = -(t * rho);
+        let root = b.mul_add(b, -(L::c(4.0) * a * c)).max(L::ZERO).sqrt();
+        // The two roots without cancellation; the one in [0, 1] (F rises along the sector).
+        let q = L::c(-0.5) * (b + root.copysign(b));
+        let (r1, r2) = (q / a, c / q);
+        let inside = |r: L| r.ge(L::ZERO) & r.le(L::ONE);
+        let tau = L::select(inside(r2), r2, L::select(inside(r1), r1, L::ZERO));
+        let x = V2::new(
+            tau.mul_add(self.chord_e.x, self.chord_a.x),
+            tau.mul_add(self.chord_e.y, self.chord_a.y),
+        );
+        let psi = cross2(self.d, x).atan2(self.d.dot(x));
+        L::select(psi.gt(L::ZERO), psi.min(self.width), L::ZERO)
     }
 
     /// The direction at angle ψ ∈ [0, width] from the start: the ends exactly, where the
@@ -599,8 +639,7 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
     /// The region narrows to a point at both extremes (a vertex), where F grows as the square
     /// of the distance and Newton on F itself converges only linearly. The solve is on
     /// √F − √target in the first half of the area and √(P − F) − √(P − target) in the second,
-    /// which are nearly linear there: the seed, linear in that root between the sector's
-    /// ends, is exact for a corner of straight sides.
+    /// which are nearly linear there. The seed is [`Sector::seed`]'s.
     #[inline(always)]
     fn sample_decentral(&self, share: L, radius: L) -> V3<L> {
         type W<L> = <L as Widen>::Wide;
@@ -612,21 +651,19 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         let upper = target.gt(L::HALF * total);
         let root_of = |f: L| L::select(upper, total - f, f).max(L::ZERO).sqrt();
         let root = root_of(target);
-        let (g0, g1) = (root_of(s.f0), root_of(s.f1));
-        let t = (root - g0) / (g1 - g0);
-        // 0/0 for a sector of no area; a target past the ends by rounding.
-        let t = L::select(t.gt(L::ZERO), t.min(L::ONE), L::ZERO);
-        let mut psi = s.width * t;
+        let mut psi = s.seed(target);
         let (mut a, mut b) = (L::ZERO, s.width);
         let mut best = L::c(f64::INFINITY);
         let mut best_psi = L::ZERO;
-        let mut last = V2::default();
-        // A lane is done once F is within its f32 rounding of the target, or its step within
-        // an ulp of the angle; it then stays where it is, so that the steps the other lanes
-        // of a packet still take repeat its values bit for bit, as its scalar call stops.
+        // A lane is done once F is within its f32 rounding of the target, or its Newton step
+        // is so short that the step's own error, of the order of its square over the width,
+        // is below an ulp of the angle. It then stays where it is, so that the steps the other
+        // lanes of a packet still take repeat its values bit for bit, as its scalar call
+        // stops; `start`, where the f64 step begins, is that ψ or where the short step leads.
         let noise = L::c(4.0) * L::EPSILON * self.spread;
-        let tiny = L::EPSILON * s.width;
+        let short = L::EPSILON.sqrt() * s.width;
         let mut done = L::ZERO.gt(L::ZERO);
+        let mut start = L::ZERO;
         for _ in 0..SOLVE_STEPS {
             let d = s.at(psi);
             let f = s.swept_at(psi, d);
@@ -636,7 +673,6 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             let better = err.le(best);
             best = L::select(better, err, best);
             best_psi = L::select(better, psi, best_psi);
-            last = V2::select(better, d, last);
             let below = f.lt(target);
             a = L::select(below, psi, a);
             b = L::select(below, b, psi);
@@ -649,13 +685,18 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             let next = psi - (g - root) / dg;
             // Newton where it stays in the bracket, else bisection.
             let to = L::select(next.gt(a) & next.lt(b), next, L::HALF * (a + b));
-            done = done | err.le(noise) | (to - psi).abs().le(tiny);
+            let close = err.le(noise);
+            let stepped = (to - psi).abs().le(short) & to.eq(next);
+            let now = (close | stepped) & !done;
+            start = L::select(now, L::select(close, psi, to), start);
+            done = done | close | stepped;
             psi = L::select(done, psi, to);
             if done.all() {
                 break;
             }
         }
-        let d = last;
+        let start = L::select(done, start, best_psi);
+        let d = s.at(start);
         // One Newton step on the sector's terms in f64: in f32 they cancel by up to
         // PROJECTED_MAX_SPREAD, which leaves F an error of that many ε of P.
         // On √F (or √(P − F)) as the solve, which stays well-conditioned at the tips, where
@@ -674,7 +715,7 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             .max(W::<L>::ZERO)
             .sqrt();
         let dg = L::select(L::narrow_mask(up), -slope, slope) / (L::TWO * L::narrow(g));
-        let refined = (best_psi - L::narrow(g - root) / dg).clamp(L::ZERO, s.width);
+        let refined = (start - L::narrow(g - root) / dg).clamp(L::ZERO, s.width);
         let refine = slope.gt(L::ZERO) & refined.is_finite();
         let d = V2::select(refine, s.at(refined), d);
         let (zo, ro) = radii(s.outer.0, d);
@@ -808,6 +849,19 @@ fn sectors_of<L: Math, const K: usize>(
         let fix_end = t.f1 - t.swept(end);
         let rate = (fix_end - t.fix) / t.width;
         t.fix_rate = L::select(t.width.gt(L::ZERO), rate, L::ZERO);
+        // The chords between the ellipses' points at the two ends.
+        let on = |m: V3<L>, d: V2<L>| {
+            let r = radii(m, d).1.sqrt();
+            V2::new(d.x * r, d.y * r)
+        };
+        let (a_o, b_o) = (on(t.outer.0, d), on(t.outer.0, end));
+        let (a_i, b_i) = (on(t.inner.0, d), on(t.inner.0, end));
+        let e_i = b_i - a_i;
+        t.chord_a = a_o;
+        t.chord_e = b_o - a_o;
+        t.area_o = part(t.outer, end) - part(t.outer, d);
+        t.area_i = part(t.inner, end) - part(t.inner, d);
+        t.rho = cross2(a_o, e_i) / cross2(b_o, e_i);
         *s = t;
     }
     sec

@@ -16,11 +16,9 @@
 //!   squared radius: exact, with no solve.
 //! - **Decentral case**: each azimuth between the polygon's two extreme directions meets one
 //!   inner and one outer edge. The azimuth comes from the area F(d) swept up to direction d,
-//!   F(d) = u₁·P. The vertices' azimuths cut the range into sectors, each bounded by one inner
-//!   and one outer edge, with F at their starts from the set-up: u₁ picks the sector, and
-//!   within it a bracketed Newton solve on the two arcs' f32 areas (F′ = ½(r_o² − r_i²) per
-//!   radian) and a last Newton step on them in f64, where they do not cancel, give the
-//!   azimuth; the squared radius is uniform between the two ellipses.
+//!   F(d) = u₁·P, by a bracketed Newton solve on f32 sectors (F′ = ½(r_o² − r_i²) per radian)
+//!   and a last Newton step on the sectors summed in f64, where they do not cancel; the
+//!   squared radius is uniform between the two ellipses.
 //!
 //! Lifting the disk's point p to ω = (p, √(1 − |p|²)) gives the density n·ω / P per steradian.
 //! P, a sum of terms of both signs in the decentral case, cancels for small or distant lights;
@@ -50,8 +48,7 @@ pub const PROJECTED_MIN_SR: f32 = 1e-4;
 /// polygon is sampled by projected solid angle. The azimuth solve runs on f32 sectors, which
 /// cancel by this ratio, and ends with one Newton step on the sectors in f64; up to 1024 that
 /// step lands within about an ulp of the output (measured: 99 % of samples within 1.1 ulp,
-/// over 10⁵ samples each of random triangles and parallelograms), at 4096 some solves end
-/// too far for it.
+/// the worst 3e-5 in u₁ over 1.6e5 random triangles), at 4096 some solves end too far for it.
 /// Beyond, the light is sampled by solid angle: it is small or thin as seen from the receiver,
 /// so the cosine varies little over it.
 pub const PROJECTED_MAX_SPREAD: f32 = 1024.0;
@@ -76,168 +73,6 @@ struct Edge<L> {
     area: L,
     /// θ, the arc's length.
     theta: L,
-}
-
-/// An edge of the decentral case's sector as the f64 step sweeps it: its end before the
-/// sector (world space, any length), its unit plane normal and m̂·n.
-#[derive(Clone, Copy, Default)]
-struct WideArc<T> {
-    low: V3<T>,
-    m: V3<T>,
-    mz: T,
-}
-
-/// The decentral case between one vertex's azimuth and the next (the polygon's vertices,
-/// clipped, sorted by azimuth, bound these sectors): there one outer and one inner edge bound
-/// the region, so the area swept up to a direction d of the sector is F(d) = (the edges wholly
-/// before it) + (the outer edge's arc from its low end to d) + (the inner edge's), the same
-/// terms [`Projected::swept`] sums, without the search through every edge.
-#[derive(Clone, Copy, Default)]
-struct Sector<L: Widen> {
-    /// The azimuths of the start (a vertex's, bit for bit) and of the end, and the angle
-    /// between them; the start's angle from the least azimuth.
-    d: V2<L>,
-    start: L,
-    end: V2<L>,
-    width: L,
-    /// The area of the edges wholly before the sector, and F at its start and end (from f64).
-    full: L,
-    f0: L,
-    f1: L,
-    /// What the f32 sum [`swept`](Self::swept) misses of F at the start, and the rate (per
-    /// radian) at which that correction moves to the end's: the f32 F the solve uses then
-    /// meets the f64 one at both ends, so that every target between them is reached (the
-    /// greatest azimuth can be a vertex on the horizon, where a sample has no density).
-    fix: L,
-    fix_rate: L,
-    /// The seed's model (see [`Sector::seed`]): the outer arc's point at the start and its
-    /// chord to the end, the outer and inner arcs' areas over the sector, and ρ, where the
-    /// inner chord meets the direction along the outer one.
-    chord_a: V2<L>,
-    chord_e: V2<L>,
-    area_o: L,
-    area_i: L,
-    rho: L,
-    /// The outer and the inner edge: plane normal (local) and low end.
-    outer: (V3<L>, V3<L>),
-    inner: (V3<L>, V3<L>),
-    /// The same in f64: the area wholly before, F at the start (the sector's key), the arcs.
-    wide_full: L::Wide,
-    wide_f0: L::Wide,
-    wide_outer: WideArc<L::Wide>,
-    wide_inner: WideArc<L::Wide>,
-}
-
-impl<L: Math> Sector<L> {
-    #[inline(always)]
-    fn select(m: L::Mask, a: Self, b: Self) -> Self {
-        type W<L> = <L as Widen>::Wide;
-        let mw = L::select(m, L::ONE, L::ZERO).widen().gt(W::<L>::ZERO);
-        let arc = |x: WideArc<W<L>>, y: WideArc<W<L>>| WideArc {
-            low: V3::select(mw, x.low, y.low),
-            m: V3::select(mw, x.m, y.m),
-            mz: W::<L>::select(mw, x.mz, y.mz),
-        };
-        Self {
-            d: V2::select(m, a.d, b.d),
-            end: V2::select(m, a.end, b.end),
-            width: L::select(m, a.width, b.width),
-            start: L::select(m, a.start, b.start),
-            full: L::select(m, a.full, b.full),
-            f0: L::select(m, a.f0, b.f0),
-            f1: L::select(m, a.f1, b.f1),
-            fix: L::select(m, a.fix, b.fix),
-            fix_rate: L::select(m, a.fix_rate, b.fix_rate),
-            chord_a: V2::select(m, a.chord_a, b.chord_a),
-            chord_e: V2::select(m, a.chord_e, b.chord_e),
-            area_o: L::select(m, a.area_o, b.area_o),
-            area_i: L::select(m, a.area_i, b.area_i),
-            rho: L::select(m, a.rho, b.rho),
-            outer: (
-                V3::select(m, a.outer.0, b.outer.0),
-                V3::select(m, a.outer.1, b.outer.1),
-            ),
-            inner: (
-                V3::select(m, a.inner.0, b.inner.0),
-                V3::select(m, a.inner.1, b.inner.1),
-            ),
-            wide_full: W::<L>::select(mw, a.wide_full, b.wide_full),
-            wide_f0: W::<L>::select(mw, a.wide_f0, b.wide_f0),
-            wide_outer: arc(a.wide_outer, b.wide_outer),
-            wide_inner: arc(a.wide_inner, b.wide_inner),
-        }
-    }
-
-    /// F at the unit 2D direction d of the sector, in f32.
-    #[inline(always)]
-    fn swept(&self, d: V2<L>) -> L {
-        self.full + part(self.outer, d) + part(self.inner, d)
-    }
-
-    /// F at angle ψ of the sector and its direction d: the f32 sum, corrected to the f64
-    /// values at the ends.
-    #[inline(always)]
-    fn swept_at(&self, psi: L, d: V2<L>) -> L {
-        self.swept(d) + self.fix_rate.mul_add(psi, self.fix)
-    }
-
-    /// The angle ψ where F reaches `target` with the arcs replaced by their chords, each
-    /// scaled to its arc's area: along the outer chord A + τE the outer area grows as τ·A_o,
-    /// and the inner chord is met at σ = τ/(ρ + (1 − ρ)τ), where the inner area is σ·A_i, so
-    /// that A_o·τ + A_i·σ = target − F₀ is a quadratic in τ. Exact at both ends and for a
-    /// sector of straight edges; the arcs' bulge, of the order of the sector's width squared,
-    /// is what the Newton steps remove.
-    #[inline(always)]
-    fn seed(&self, target: L) -> L {
-        let t = (target - self.f0).max(L::ZERO);
-        let (ao, ai, rho) = (self.area_o, self.area_i, self.rho);
-        let a = ao * (L::ONE - rho);
-        let b = ao.mul_add(rho, ai) - t * (L::ONE - rho);
-        let c = -(t * rho);
-        let root = b.mul_add(b, -(L::c(4.0) * a * c)).max(L::ZERO).sqrt();
-        // The two roots without cancellation; the one in [0, 1] (F rises along the sector).
-        let q = L::c(-0.5) * (b + root.copysign(b));
-        let (r1, r2) = (q / a, c / q);
-        let inside = |r: L| r.ge(L::ZERO) & r.le(L::ONE);
-        let tau = L::select(inside(r2), r2, L::select(inside(r1), r1, L::ZERO));
-        let x = V2::new(
-            tau.mul_add(self.chord_e.x, self.chord_a.x),
-            tau.mul_add(self.chord_e.y, self.chord_a.y),
-        );
-        let psi = cross2(self.d, x).atan2(self.d.dot(x));
-        L::select(psi.gt(L::ZERO), psi.min(self.width), L::ZERO)
-    }
-
-    /// The direction at angle ψ ∈ [0, width] from the start: the ends exactly, where the
-    /// rotation could round past them.
-    #[inline(always)]
-    fn at(&self, psi: L) -> V2<L> {
-        let (sin, cos) = psi.sin_cos();
-        let d = self.d;
-        let r = V2::new(d.x.mul_add(cos, -d.y * sin), d.y.mul_add(cos, d.x * sin));
-        V2::select(
-            psi.ge(self.width),
-            self.end,
-            V2::select(psi.le(L::ZERO), d, r),
-        )
-    }
-}
-
-/// ½·m̂_z times the arc's angle from its point `low` to its point at azimuth d: the area the
-/// great circle with plane normal m̂ sweeps from the disk's centre (0 for m̂ = 0).
-#[inline(always)]
-fn part<L: Math>((m, low): (V3<L>, V3<L>), d: V2<L>) -> L {
-    L::HALF * m.z * angle(low, arc_point(m, d))
-}
-
-/// [`part`] in f64, at world direction h with q = n × h (the plane of n and h): the arc's point
-/// there from IEEE operations.
-#[inline(always)]
-fn part_wide<T: Lane>(a: WideArc<T>, h: V3<T>, q: V3<T>) -> T {
-    let x = cross3_in(a.m, q);
-    let x = x.scale(T::ONE.copysign(dot3_in(x, h)));
-    let c = cross3_in(a.low, x);
-    T::HALF * a.mz * angle_in(dot3_in(c, c).sqrt(), dot3_in(a.low, x))
 }
 
 /// The set-up of the projected-solid-angle map of a convex polygon of `N` vertices, clipped to
@@ -266,11 +101,6 @@ struct Projected<L: Math, const N: usize, const K: usize> {
     hi: V2<L>,
     /// The vertices at those azimuths, where the region narrows to a point (local frame).
     tips: [V3<L>; 2],
-    /// The sector after each slot's vertex (decentral case), and the slot at the least
-    /// azimuth.
-    sec: [Sector<L>; K],
-    lo_slot: L,
-    lo_index: usize,
     /// The inside test of the whole (unclipped) polygon.
     edges: EdgePlanes<L, N>,
     /// The edges in f64 (world space), P in f64 and the unit normal: the decentral solve's
@@ -411,9 +241,7 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         let mut tips = [V3::default(); 2];
         let no = L::ZERO.gt(L::ZERO);
         let (mut found_lo, mut found_hi) = (no, no);
-        let mut lo_slot = L::ZERO;
-        let mut lo_index = 0;
-        for (j, x) in e.iter().enumerate().take(count) {
+        for x in e.iter().take(count) {
             let (mut is_lo, mut is_hi) = (L::ZERO.le(L::ZERO), L::ZERO.le(L::ZERO));
             for y in e.iter().take(count) {
                 let c = cross2(x.da, y.da);
@@ -425,8 +253,6 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             // first meet them, so a lane of a packet with a clipped lane picks the same one.
             let (take_lo, take_hi) = (is_lo & !found_lo, is_hi & !found_hi);
             lo = V2::select(take_lo, x.da, lo);
-            lo_slot = L::select(take_lo, L::c(j as f64), lo_slot);
-            lo_index = if take_lo.any() { j } else { lo_index };
             hi = V2::select(take_hi, x.da, hi);
             found_lo = found_lo | is_lo;
             found_hi = found_hi | is_hi;
@@ -436,11 +262,6 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
                 V3::select(take_hi, x.a, t_hi),
             ];
         }
-        let sec = if (!central).any() {
-            sectors_of(&e, &wide, count, &frame, g.n, lo)
-        } else {
-            [Sector::default(); K]
-        };
         // The azimuth solve sums the sectors in f32, whose errors, a few ε of each term's
         // size, reach the sampled u₁ magnified by their cancellation.
         let known = spread.le(sectors * L::c(PROJECTED_MAX_SPREAD as f64));
@@ -462,9 +283,6 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             lo,
             hi,
             tips,
-            sec,
-            lo_slot,
-            lo_index,
             // A sample is built in the shading frame and rotated back: two f32 rotations and a
             // normalisation, each a few ε, on top of the spherical maps' slack.
             edges: EdgePlanes::new(g.planes(), L::ONE, p).widened(L::c(8.0) * L::EPSILON),
@@ -494,7 +312,7 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             V3::default()
         };
         let d = if (!self.central).any() {
-            self.sample_decentral(u.y, u.x)
+            self.sample_decentral(target, u.y, u.x)
         } else {
             V3::default()
         };
@@ -556,8 +374,9 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             outer = V3::select(meets & o, e.m, outer);
             inner = V3::select(meets & i, e.m, inner);
         }
+        let part = |m: V3<L>, low: V3<L>| L::HALF * m.z * angle(low, arc_point(m, d));
         (
-            full + part((part_o, low_o), d) + part((part_i, low_i), d),
+            full + part(part_o, low_o) + part(part_i, low_i),
             outer,
             inner,
         )
@@ -593,120 +412,101 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             m_i = V3::select(i, e.m, m_i);
             z_i = W::<L>::select(i, e.mz, z_i);
         }
-        let arc = |low, m, mz| WideArc { low, m, mz };
-        full + part_wide(arc(low_o, m_o, z_o), h, q) + part_wide(arc(low_i, m_i, z_i), h, q)
+        // The arc's point in the vertical plane through n and h (normal q), on h's side.
+        let part = |low: V3<W<L>>, m: V3<W<L>>, mz: W<L>| {
+            let x = cross3_in(m, q);
+            let x = x.scale(W::<L>::ONE.copysign(dot3_in(x, h)));
+            let c = cross3_in(low, x);
+            W::<L>::HALF * mz * angle_in(dot3_in(c, c).sqrt(), dot3_in(low, x))
+        };
+        full + part(low_o, m_o, z_o) + part(low_i, m_i, z_i)
     }
 
-    /// The sector holding the azimuth where F = `target` (in f64): the last in azimuth whose
-    /// F at the start is at or below it, the first one where none is (a target rounded below
-    /// F at the least azimuth). In azimuth rather than by F: F rises by rounding noise alone
-    /// over a sector whose area cancels to nothing, and can fall there. Loaded by index in the
-    /// scalar form, by selects in a packet.
-    #[inline(always)]
-    fn sector(&self, target: <L as Widen>::Wide) -> Sector<L> {
-        let mut k = self.lo_slot;
-        let mut index = self.lo_index;
-        let (mut best, mut wider) = (L::c(f64::NEG_INFINITY), L::ZERO);
-        for (j, s) in self.sec.iter().enumerate().take(self.count) {
-            // Two vertices on one radial plane can round to one start: the longer sector is
-            // the one that reaches past the other's. The first slot among equal sectors: the
-            // order in which the slots first meet the vertices is that of the N edges kept
-            // where no lane clipped, so a lane of a packet with a clipped lane picks the same.
-            let later = s.start.gt(best) | (s.start.eq(best) & s.width.gt(wider));
-            let take = L::narrow_mask(s.wide_f0.le(target)) & later;
-            best = L::select(take, s.start, best);
-            wider = L::select(take, s.width, wider);
-            k = L::select(take, L::c(j as f64), k);
-            // The scalar's index (a packet's lanes differ).
-            index = if take.any() { j } else { index };
-        }
-        if L::WIDTH == 1 {
-            self.sec.get(index).copied().unwrap_or_default()
-        } else {
-            let mut pick = Sector::default();
-            for (j, s) in self.sec.iter().enumerate().take(self.count) {
-                pick = Sector::select(k.eq(L::c(j as f64)), *s, pick);
-            }
-            pick
-        }
-    }
-
-    /// The decentral case: the sector where F reaches the target (F at the sectors' starts
-    /// from the set-up), there the azimuth where F = target by a bracketed Newton solve on
-    /// the sector's two arcs, then the squared radius uniform between the inner and outer
-    /// ellipses.
+    /// The decentral case: the azimuth where F = target by a bracketed Newton solve over the
+    /// chord between the extreme azimuths, then the squared radius uniform between the inner
+    /// and outer ellipses.
     ///
     /// The region narrows to a point at both extremes (a vertex), where F grows as the square
     /// of the distance and Newton on F itself converges only linearly. The solve is on
     /// √F − √target in the first half of the area and √(P − F) − √(P − target) in the second,
-    /// which are nearly linear there. The seed is [`Sector::seed`]'s.
+    /// which are nearly linear there: one step from a seed at the right distance is exact for
+    /// a corner of straight sides.
     #[inline(always)]
-    fn sample_decentral(&self, share: L, radius: L) -> V3<L> {
+    fn sample_decentral(&self, target: L, share: L, radius: L) -> V3<L> {
         type W<L> = <L as Widen>::Wide;
-        // P and the target from f64, as the sectors' ends.
-        let total = self.p;
-        let target_wide = share.widen() * self.wide_p;
-        let target = L::narrow(target_wide);
-        let s = self.sector(target_wide);
+        let lo = self.lo;
+        let lo_perp = V2::new(-lo.y, lo.x);
+        let width = cross2(lo, self.hi).atan2(lo.dot(self.hi));
+        let total = self.sectors;
         let upper = target.gt(L::HALF * total);
-        let root_of = |f: L| L::select(upper, total - f, f).max(L::ZERO).sqrt();
-        let root = root_of(target);
-        let mut psi = s.seed(target);
-        let (mut a, mut b) = (L::ZERO, s.width);
+        // The distance from the nearer end, as area: the target measured from that end.
+        let rest = L::select(upper, total - target, target);
+        let root = rest.sqrt();
+        let (mut a, mut b) = (L::ZERO, width);
+        // The seed of a rhombus: F = 2P·(ψ/Ψ)² up to the middle.
+        let k = (rest / (L::TWO * total)).sqrt() * width;
+        let mut psi = L::select(upper, width - k, k);
         let mut best = L::c(f64::INFINITY);
         let mut best_psi = L::ZERO;
-        // A lane is done once F is within its f32 rounding of the target, or its Newton step
-        // is so short that the step's own error, of the order of its square over the width,
-        // is below an ulp of the angle. It then stays where it is, so that the steps the other
-        // lanes of a packet still take repeat its values bit for bit, as its scalar call
-        // stops; `start`, where the f64 step begins, is that ψ or where the short step leads.
+        let at_angle = |psi: L| {
+            let (sin, cos) = psi.sin_cos();
+            let d = V2::new(
+                lo.x.mul_add(cos, lo_perp.x * sin),
+                lo.y.mul_add(cos, lo_perp.y * sin),
+            );
+            // The ends exactly: the rotation by the whole width can round past the last
+            // vertex, where no edge lies.
+            V2::select(psi.ge(width), self.hi, V2::select(psi.le(L::ZERO), lo, d))
+        };
+        let mut last = (V2::default(), V3::default(), V3::default());
+        // A lane is done once F is within its f32 rounding of the target, or its step within
+        // an ulp of the angle; it then stays where it is, so that the steps the other lanes
+        // of a packet still take repeat its values bit for bit, as its scalar call stops.
         let noise = L::c(4.0) * L::EPSILON * self.spread;
-        let short = L::EPSILON.sqrt() * s.width;
+        let tiny = L::EPSILON * width;
         let mut done = L::ZERO.gt(L::ZERO);
-        let mut start = L::ZERO;
         for _ in 0..SOLVE_STEPS {
-            let d = s.at(psi);
-            let f = s.swept_at(psi, d);
+            let d = at_angle(psi);
+            let (f, o, i) = self.swept(d);
             // The closest so far: once converged, rounding can send a step out of the bracket,
             // and the bisection that follows away from the solution.
             let err = (f - target).abs();
             let better = err.le(best);
             best = L::select(better, err, best);
             best_psi = L::select(better, psi, best_psi);
+            last = (
+                V2::select(better, d, last.0),
+                V3::select(better, o, last.1),
+                V3::select(better, i, last.2),
+            );
             let below = f.lt(target);
             a = L::select(below, psi, a);
             b = L::select(below, b, psi);
-            let (_, ro) = radii(s.outer.0, d);
-            let (_, ri) = radii(s.inner.0, d);
+            let (_, ro) = radii(o, d);
+            let (_, ri) = radii(i, d);
             // dF/dψ = ½(r_o² − r_i²); d√G/dψ = ±F′/(2√G).
             let slope = L::HALF * (ro - ri);
-            let g = root_of(f);
+            let g = L::select(upper, total - f, f).max(L::ZERO).sqrt();
             let dg = L::select(upper, -slope, slope) / (L::TWO * g);
             let next = psi - (g - root) / dg;
             // Newton where it stays in the bracket, else bisection.
             let to = L::select(next.gt(a) & next.lt(b), next, L::HALF * (a + b));
-            let close = err.le(noise);
-            let stepped = (to - psi).abs().le(short) & to.eq(next);
-            let now = (close | stepped) & !done;
-            start = L::select(now, L::select(close, psi, to), start);
-            done = done | close | stepped;
+            done = done | err.le(noise) | (to - psi).abs().le(tiny);
             psi = L::select(done, psi, to);
             if done.all() {
                 break;
             }
         }
-        let start = L::select(done, start, best_psi);
-        let d = s.at(start);
-        // One Newton step on the sector's terms in f64: in f32 they cancel by up to
+        let (d, o, i) = last;
+        // One Newton step on the sectors summed in f64: in f32 they cancel by up to
         // PROJECTED_MAX_SPREAD, which leaves F an error of that many ε of P.
         // On √F (or √(P − F)) as the solve, which stays well-conditioned at the tips, where
         // F′ → 0.
-        let (_, ro) = radii(s.outer.0, d);
-        let (_, ri) = radii(s.inner.0, d);
+        let (_, ro) = radii(o, d);
+        let (_, ri) = radii(i, d);
         let slope = L::HALF * (ro - ri);
-        let h = widen3(self.frame.to_world(V3::new(d.x, d.y, L::ZERO)));
-        let q = cross3_in(self.wide_n, h);
-        let f = s.wide_full + part_wide(s.wide_outer, h, q) + part_wide(s.wide_inner, h, q);
+        let f = self.swept_wide(d);
+        let target_wide = share.widen() * self.wide_p;
         let up = target_wide.gt(W::<L>::HALF * self.wide_p);
         let g = W::<L>::select(up, self.wide_p - f, f)
             .max(W::<L>::ZERO)
@@ -715,11 +515,12 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             .max(W::<L>::ZERO)
             .sqrt();
         let dg = L::select(L::narrow_mask(up), -slope, slope) / (L::TWO * L::narrow(g));
-        let refined = (start - L::narrow(g - root) / dg).clamp(L::ZERO, s.width);
+        let refined = (best_psi - L::narrow(g - root) / dg).clamp(L::ZERO, width);
         let refine = slope.gt(L::ZERO) & refined.is_finite();
-        let d = V2::select(refine, s.at(refined), d);
-        let (zo, ro) = radii(s.outer.0, d);
-        let (zi, ri) = radii(s.inner.0, d);
+        let d = V2::select(refine, at_angle(refined), d);
+        let (_, o, i) = self.swept(d);
+        let (zo, ro) = radii(o, d);
+        let (zi, ri) = radii(i, d);
         // (1 − u)·a + u·b, sums of non-negative terms: at u → 1 against the horizon (zo = 0)
         // z² is (1 − u)·zi to the rounding of each factor, where zi − u·zi would cancel.
         let r2 = (L::ONE - radius).mul_add(ri, radius * ro);
@@ -770,101 +571,6 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         let u = V2::new(L::select(self.central, radius_c, radius_d), share);
         V2::select(axis, V2::default(), u)
     }
-}
-
-/// The sector after each of the first `count` slots' vertices: the edges wholly before its
-/// azimuth, the outer and inner edge that span it (their low end at or before it, their high
-/// end after), and where the nearer high end closes it. The tests are those of
-/// [`Projected::swept`], so that F at a sector's start is that function's value there.
-#[inline(always)]
-fn sectors_of<L: Math, const K: usize>(
-    e: &[Edge<L>; K],
-    wide: &[WideEdge<L::Wide>; K],
-    count: usize,
-    frame: &Frame<V3<L>>,
-    n: V3<L::Wide>,
-    lo: V2<L>,
-) -> [Sector<L>; K] {
-    type W<L> = <L as Widen>::Wide;
-    let to_wide = |m: L::Mask| L::select(m, L::ONE, L::ZERO).widen().gt(W::<L>::ZERO);
-    let mut sec = [Sector::default(); K];
-    for (s, x) in sec.iter_mut().zip(e).take(count) {
-        let d = x.da;
-        let mut t = Sector {
-            d,
-            start: cross2(lo, d).atan2(lo.dot(d)),
-            ..Sector::default()
-        };
-        let (mut end_o, mut end_i) = (V2::default(), V2::default());
-        for (y, w) in e.iter().zip(wide).take(count) {
-            let a_le = cross2(y.da, d).ge(L::ZERO);
-            let b_le = cross2(y.db, d).ge(L::ZERO);
-            let both = a_le & b_le;
-            t.full = t.full + L::select(both, y.area, L::ZERO);
-            t.wide_full = t.wide_full + W::<L>::select(to_wide(both), w.area, W::<L>::ZERO);
-            let spans = (a_le & !b_le) | (b_le & !a_le);
-            let (o, i) = (spans & y.m.z.gt(L::ZERO), spans & y.m.z.lt(L::ZERO));
-            let arc = (y.m, V3::select(a_le, y.a, y.b));
-            let high = V2::select(a_le, y.db, y.da);
-            let wide_arc = WideArc {
-                low: V3::select(to_wide(a_le), w.a, w.b),
-                m: w.m,
-                mz: w.mz,
-            };
-            let pick = |m: L::Mask, a: WideArc<W<L>>, b: WideArc<W<L>>| {
-                let m = to_wide(m);
-                WideArc {
-                    low: V3::select(m, a.low, b.low),
-                    m: V3::select(m, a.m, b.m),
-                    mz: W::<L>::select(m, a.mz, b.mz),
-                }
-            };
-            t.outer = (
-                V3::select(o, arc.0, t.outer.0),
-                V3::select(o, arc.1, t.outer.1),
-            );
-            t.inner = (
-                V3::select(i, arc.0, t.inner.0),
-                V3::select(i, arc.1, t.inner.1),
-            );
-            t.wide_outer = pick(o, wide_arc, t.wide_outer);
-            t.wide_inner = pick(i, wide_arc, t.wide_inner);
-            end_o = V2::select(o, high, end_o);
-            end_i = V2::select(i, high, end_i);
-        }
-        // The nearer of the two high ends (the greatest azimuth, where no edge spans: 0, a
-        // sector of width 0).
-        let end = V2::select(cross2(end_o, end_i).ge(L::ZERO), end_o, end_i);
-        t.end = end;
-        t.width = cross2(d, end).atan2(d.dot(end)).max(L::ZERO);
-        let wide_at = |d: V2<L>| {
-            let h = widen3(frame.to_world(V3::new(d.x, d.y, L::ZERO)));
-            let q = cross3_in(n, h);
-            t.wide_full + part_wide(t.wide_outer, h, q) + part_wide(t.wide_inner, h, q)
-        };
-        t.wide_f0 = wide_at(d);
-        t.f0 = L::narrow(t.wide_f0);
-        t.f1 = L::narrow(wide_at(end));
-        t.fix = t.f0 - t.swept(d);
-        let fix_end = t.f1 - t.swept(end);
-        let rate = (fix_end - t.fix) / t.width;
-        t.fix_rate = L::select(t.width.gt(L::ZERO), rate, L::ZERO);
-        // The chords between the ellipses' points at the two ends.
-        let on = |m: V3<L>, d: V2<L>| {
-            let r = radii(m, d).1.sqrt();
-            V2::new(d.x * r, d.y * r)
-        };
-        let (a_o, b_o) = (on(t.outer.0, d), on(t.outer.0, end));
-        let (a_i, b_i) = (on(t.inner.0, d), on(t.inner.0, end));
-        let e_i = b_i - a_i;
-        t.chord_a = a_o;
-        t.chord_e = b_o - a_o;
-        t.area_o = part(t.outer, end) - part(t.outer, d);
-        t.area_i = part(t.inner, end) - part(t.inner, d);
-        t.rho = cross2(a_o, e_i) / cross2(b_o, e_i);
-        *s = t;
-    }
-    sec
 }
 
 /// The unit vector along a 2D vector (NaN for 0).

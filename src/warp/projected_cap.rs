@@ -347,10 +347,10 @@ impl<L: Math> Cap<L> {
             let step = (target - self.area_below(y)) / w;
             let step = L::select(w.gt(L::ZERO) & step.is_finite(), step, L::ZERO);
             let next = (y + step).clamp(L::ZERO, self.yc);
-            // Converged once a step moves y by under 2⁻²¹ of y_c (Newton's next would move it by
-            // about the square of that). A stopped lane keeps its value, so that every lane
+            // Converged once a step moves y by under √ε of y_c: Newton's next would move it by
+            // about the square of that, ε. A stopped lane keeps its value, so that every lane
             // follows its scalar path.
-            let small = (next - y).abs().le(self.yc * L::c(1.0 / 2_097_152.0));
+            let small = (next - y).abs().le(self.yc * L::EPSILON.sqrt());
             y = L::select(done, y, next);
             done = done | small;
             if done.all() {

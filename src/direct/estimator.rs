@@ -4,7 +4,7 @@
 
 use glam::Vec3;
 
-use super::{Config, DirectLane, Lights, PREPARED_LIGHTS, ShadingPoint, Visibility};
+use super::{Config, DirectLane, Lights, PREPARED_LIGHTS, ShadingPoint, Strategy, Visibility};
 use crate::estimate::roulette;
 use crate::frame::Frame;
 use crate::lane::{Lane, Mask, V2, V3, lane_of};
@@ -38,6 +38,21 @@ pub(super) struct Estimator<'a, 's, V: Point3, B, S, F> {
     pub(super) rays: u32,
 }
 
+/// How `strategy` prepares the lights when the caller asks for `sampling`. The strategies that
+/// only trace directions (the hemispheres' and the BSDF's) never sample a light nor read its
+/// density, only whether and where their rays meet it, so they prepare by area, the mode with the
+/// least set-up (no spherical ellipse for the disk, no bilinear or projected table for the
+/// polygons); the directions, and so the estimate, do not depend on the mode.
+fn preparation(strategy: Strategy, sampling: scene::LightSampling) -> scene::LightSampling {
+    match strategy {
+        Strategy::UniformThetaPhi
+        | Strategy::UniformHemisphere
+        | Strategy::CosineHemisphere
+        | Strategy::Bsdf => scene::LightSampling::Area,
+        _ => sampling,
+    }
+}
+
 /// A light sample as the estimator uses it: the direction, the unoccluded f·Le·cos θ, the pdf
 /// including the light's selection probability, and the point the shadow ray goes to.
 pub(super) struct Sampled<L: Lane> {
@@ -56,6 +71,7 @@ where
     F: Visibility<V>,
 {
     pub(super) fn new(
+        strategy: Strategy,
         lights: &'s Lights<'a>,
         bsdf: &'s B,
         at: ShadingPoint<V>,
@@ -81,7 +97,7 @@ where
             n_bsdf,
             // τ ≤ 0 or NaN: no roulette.
             tau: L::select(tau.gt(L::ZERO), tau, L::ZERO),
-            sampling: config.light_sampling,
+            sampling: preparation(strategy, config.light_sampling),
             samples,
             visibility,
             cache: [None; PREPARED_LIGHTS],

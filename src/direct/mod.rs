@@ -43,7 +43,10 @@
 //!
 //! Each light is prepared at the shading point ([`Light::at`](crate::scene::Light::at)) once per estimate, so splitting
 //! (N > 1) pays the set-up once; the first [`PREPARED_LIGHTS`] lights of the slice are kept
-//! prepared, further ones are prepared at each use (the same numbers, more time).
+//! prepared, further ones are prepared at each use (the same numbers, more time). The
+//! strategies that only trace directions (the hemispheres' and the BSDF's) prepare the lights by
+//! area whatever [`Config::light_sampling`] says: they read only where their rays meet a light,
+//! never its density, and the area mode has the least set-up.
 //!
 //! With `Config::roulette` = τ > 0, a shadow ray whose weighted unoccluded contribution has
 //! luminance y < τ is traced with probability q = max(y/τ, [`ROULETTE_Q_MIN`](crate::estimate::ROULETTE_Q_MIN)) and its
@@ -115,7 +118,7 @@ where
     S: Samples<V::Vec2>,
     F: Visibility<V>,
 {
-    let mut e = Estimator::new(lights, bsdf, at, config, samples, visibility);
+    let mut e = Estimator::new(strategy, lights, bsdf, at, config, samples, visibility);
     let sum = match strategy {
         Strategy::UniformThetaPhi
         | Strategy::UniformHemisphere

@@ -7,7 +7,7 @@ use core::f64::consts::PI;
 use glam::Vec3;
 
 use super::luminance;
-use super::shape::{LightSampling, PreparedShape, Shape};
+use super::shape::{AtPoint, LightSampling, PreparedShape, Shape};
 use crate::lane::V3;
 use crate::math::Math;
 use crate::point::Point3;
@@ -93,19 +93,31 @@ impl<S: Shape<V>, V: Point3<Lane = L>, L: Math> Emitter<S, V> {
     /// [`PreparedEmitter::sample`] at shading point `p`.
     #[inline]
     pub fn sample(&self, p: V, u: V::Vec2) -> LightSample<V> {
-        self.at(p).sample(u)
+        self.once_at(p, Query::Sample(u))
     }
 
     /// The pdf per steradian of `sample` at `p` in unit direction `wi`.
     #[inline]
     pub fn pdf(&self, p: V, wi: V) -> L {
-        self.at(p).pdf(wi)
+        self.once_at(p, Query::Pdf(wi)).pdf
     }
 
     /// The distance from `p` along unit `wi` to the light, ∞ for a miss.
     #[inline]
     pub fn hit(&self, p: V, wi: V) -> L {
-        self.at(p).hit(wi)
+        self.once_at(p, Query::Hit(wi)).dist
+    }
+
+    /// One query of the light prepared at `p` (no normal, by solid angle), the prepared shape
+    /// kept where it is built ([`Shape::with_at`]).
+    #[inline(always)]
+    fn once_at(&self, p: V, query: Query<V>) -> LightSample<V> {
+        let zero = V::from_lanes(V3::all(L::ZERO));
+        let work = Once {
+            query,
+            le: self.le.to_lanes(),
+        };
+        self.shape.with_at(p, zero, LightSampling::SolidAngle, work)
     }
 
     /// A point uniform on the light by area, its normal, Le towards `p` (0 where the point faces
@@ -138,15 +150,7 @@ impl<P: PreparedShape<V>, V: Point3<Lane = L>, L: Math> PreparedEmitter<P, V> {
     /// Le 0).
     #[inline]
     pub fn sample(&self, u: V::Vec2) -> LightSample<V> {
-        let s = self.shape.sample(u);
-        let (wi, dist, pdf) = (s.wi.to_lanes(), s.dist, s.pdf);
-        let ok = pdf.gt(L::ZERO) & pdf.is_finite() & dist.is_finite();
-        LightSample {
-            wi: V::from_lanes(V3::select(ok, wi, V3::new(L::ZERO, L::ZERO, L::ONE))),
-            dist: L::select(ok, dist, L::c(f64::INFINITY)),
-            le: V::from_lanes(le_towards(ok, self.le().to_lanes())),
-            pdf: L::select(ok, pdf, L::ZERO),
-        }
+        light_sample(&self.shape, self.le, u)
     }
 
     /// The pdf per steradian with which `sample` returns unit direction `wi`; 0 off the light,
@@ -181,6 +185,65 @@ impl<P: PreparedShape<V>, V: Point3<Lane = L>, L: Math> PreparedEmitter<P, V> {
     #[inline]
     pub fn shape(&self) -> &P {
         &self.shape
+    }
+}
+
+/// [`PreparedEmitter::sample`] of `shape` with radiance `le`.
+#[inline(always)]
+fn light_sample<P: PreparedShape<V>, V: Point3<Lane = L>, L: Math>(
+    shape: &P,
+    le: V3<L>,
+    u: V::Vec2,
+) -> LightSample<V> {
+    let s = shape.sample(u);
+    let (wi, dist, pdf) = (s.wi.to_lanes(), s.dist, s.pdf);
+    let ok = pdf.gt(L::ZERO) & pdf.is_finite() & dist.is_finite();
+    let le = le_towards(shape.front(), le);
+    LightSample {
+        wi: V::from_lanes(V3::select(ok, wi, V3::new(L::ZERO, L::ZERO, L::ONE))),
+        dist: L::select(ok, dist, L::c(f64::INFINITY)),
+        le: V::from_lanes(V3::select(ok, le, V3::all(L::ZERO))),
+        pdf: L::select(ok, pdf, L::ZERO),
+    }
+}
+
+/// What [`Emitter`]'s queries at a point ask of the light prepared there: a sample, or the pdf
+/// (answered in `pdf`, the rest 0) or the distance (in `dist`) of a direction.
+#[derive(Clone, Copy)]
+enum Query<V: Point3> {
+    Sample(V::Vec2),
+    Pdf(V),
+    Hit(V),
+}
+
+/// A [`Query`] with the light's radiance, as work on the prepared shape.
+struct Once<V: Point3> {
+    query: Query<V>,
+    le: V3<V::Lane>,
+}
+
+impl<V: Point3<Lane = L>, L: Math> AtPoint<V> for Once<V> {
+    type Output = LightSample<V>;
+    #[inline(always)]
+    fn run<P: PreparedShape<V>>(self, shape: &P) -> LightSample<V> {
+        let zero = V::from_lanes(V3::all(L::ZERO));
+        let none = LightSample {
+            wi: zero,
+            dist: L::ZERO,
+            le: zero,
+            pdf: L::ZERO,
+        };
+        match self.query {
+            Query::Sample(u) => light_sample(shape, self.le, u),
+            Query::Pdf(wi) => LightSample {
+                pdf: shape.eval(wi).0,
+                ..none
+            },
+            Query::Hit(wi) => LightSample {
+                dist: shape.dist(wi),
+                ..none
+            },
+        }
     }
 }
 

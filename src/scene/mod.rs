@@ -82,6 +82,6 @@ pub use rectangle::{PreparedRectangle, Rectangle, RectangleLight};
 #[cfg(feature = "std")]
 pub(crate) use select::with_shapes;
 pub use select::{AnyPrepared, AnyShape, Light, LightChoice, PowerTable, PreparedLight, luminance};
-pub use shape::{AreaPoint, LightSampling, PreparedShape, Shape, ShapeSample};
+pub use shape::{AreaPoint, AtPoint, LightSampling, PreparedShape, Shape, ShapeSample};
 pub use sphere::{PreparedSphere, Sphere, SphereLight};
 pub use triangle::{PreparedTriangle, Triangle, TriangleLight};

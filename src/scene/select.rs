@@ -5,7 +5,7 @@
 use glam::Vec3;
 
 use super::emitter::{Emitter, PreparedEmitter};
-use super::shape::{AreaPoint, LightSampling, PreparedShape, Shape, ShapeSample};
+use super::shape::{AreaPoint, AtPoint, LightSampling, PreparedShape, Shape, ShapeSample};
 use super::{
     Disk, PreparedDisk, PreparedRectangle, PreparedSphere, PreparedTriangle, Rectangle, Sphere,
     Triangle,
@@ -56,9 +56,21 @@ macro_rules! shapes {
 
         impl<V: Point3<Lane = L>, L: Math> Shape<V> for AnyShape<V> {
             type Prepared = AnyPrepared<V>;
-            #[inline]
+            // Out of line: inlined into a caller that stores the result, the variant is built
+            // on the stack and then copied, enum and all, to where it is kept.
+            #[inline(never)]
             fn at(&self, p: V, n: V, sampling: LightSampling) -> AnyPrepared<V> {
                 match self { $(Self::$name(s) => AnyPrepared::$name(s.at(p, n, sampling)),)* }
+            }
+            #[inline(always)]
+            fn with_at<W: AtPoint<V>>(
+                &self,
+                p: V,
+                n: V,
+                sampling: LightSampling,
+                work: W,
+            ) -> W::Output {
+                match self { $(Self::$name(s) => s.with_at(p, n, sampling, work),)* }
             }
             #[inline]
             fn sample_area(&self, u: V::Vec2) -> AreaPoint<V> {

@@ -101,6 +101,23 @@ pub trait Shape<V: Point3>: Copy {
     /// The light-sampling modes that change how this shape samples (the others fall back to
     /// [`LightSampling::SolidAngle`]), solid angle first.
     fn modes(&self) -> &'static [LightSampling];
+    /// `work` done on the shape prepared at `p` as [`at`](Self::at) prepares it, by reference.
+    /// A shape of any kind overrides it to hand over its own variant's prepared form, so that
+    /// one query at a point (a light's `sample(p, u)`, `pdf(p, wi)`) never builds, nor moves,
+    /// the prepared enum, which is as large as its largest variant.
+    #[inline(always)]
+    fn with_at<W: AtPoint<V>>(&self, p: V, n: V, sampling: LightSampling, work: W) -> W::Output {
+        work.run(&self.at(p, n, sampling))
+    }
+}
+
+/// Work on a prepared shape of any type: [`Shape::with_at`]'s argument (a closure cannot be
+/// generic over the shape it receives).
+pub trait AtPoint<V: Point3> {
+    /// What the work returns.
+    type Output;
+    /// The work, on `shape`.
+    fn run<P: PreparedShape<V>>(self, shape: &P) -> Self::Output;
 }
 
 /// A shape prepared at a shading point.

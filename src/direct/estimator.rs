@@ -118,10 +118,16 @@ where
         let dark = Light::from(scene::SphereLight::new(Vec3::ZERO, 0.0, Vec3::ZERO));
         let light = self.lights.lights().get(j).copied().unwrap_or(dark);
         let n = V::from_lanes(self.frame.n);
-        let prepare = || light.splat::<V>().at_sampling(p, n, self.sampling);
-        match self.cache.get_mut(j) {
-            Some(slot) => slot.get_or_insert_with(prepare),
-            None => self.spare.insert(prepare()),
+        let slot = match self.cache.get_mut(j) {
+            Some(slot) => slot,
+            None => {
+                self.spare = None;
+                &mut self.spare
+            }
+        };
+        match slot {
+            Some(prepared) => prepared,
+            None => light.splat::<V>().prepare_into(slot, p, n, self.sampling),
         }
     }
 

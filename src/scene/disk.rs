@@ -93,7 +93,7 @@ pub struct PreparedDisk<V: Point3 = Vec3> {
 impl<V: Point3<Lane = L>, L: Math> Shape<V> for Disk<V> {
     type Prepared = PreparedDisk<V>;
 
-    #[inline]
+    #[inline(always)]
     fn at(&self, p: V, _n: V, sampling: LightSampling) -> PreparedDisk<V> {
         let d = self.center.to_lanes() - p.to_lanes();
         let n = self.normal.to_lanes().normalize();

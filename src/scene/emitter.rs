@@ -28,8 +28,8 @@ pub struct Emitter<S, V: Point3 = Vec3> {
 /// An [`Emitter`] prepared at one shading point: [`Emitter::at`].
 #[derive(Clone, Copy)]
 pub struct PreparedEmitter<P, V: Point3 = Vec3> {
-    shape: P,
-    le: V3<V::Lane>,
+    pub(super) shape: P,
+    pub(super) le: V3<V::Lane>,
 }
 
 /// A direction towards a light, from a light's `sample`.

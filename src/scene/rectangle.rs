@@ -97,7 +97,7 @@ enum RectangleMap<P: Point3> {
 impl<V: Point3<Lane = L>, L: Math> Shape<V> for Rectangle<V> {
     type Prepared = PreparedRectangle<V>;
 
-    #[inline]
+    #[inline(always)]
     fn at(&self, p: V, n: V, sampling: LightSampling) -> PreparedRectangle<V> {
         let corner = self.corner.to_lanes() - p.to_lanes();
         let (ex, ey) = (self.ex.to_lanes(), self.ey.to_lanes());

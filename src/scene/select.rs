@@ -105,6 +105,28 @@ macro_rules! shapes {
             }
         }
 
+        impl<V: Point3<Lane = L>, L: Math> Light<V> {
+            /// The light prepared at `p` ([`Emitter::at_sampling`]), written to `slot`: built in
+            /// its variant, so that what is copied into the slot is the variant's size, not the
+            /// enum's (a sphere's prepared packet is a seventh of a projected rectangle's).
+            #[inline(never)]
+            pub(crate) fn prepare_into<'s>(
+                &self,
+                slot: &'s mut Option<PreparedLight<V>>,
+                p: V,
+                n: V,
+                sampling: LightSampling,
+            ) -> &'s PreparedLight<V> {
+                let le = self.le.to_lanes();
+                match &self.shape {
+                    $(AnyShape::$name(s) => slot.insert(PreparedEmitter {
+                        shape: AnyPrepared::$name(s.at(p, n, sampling)),
+                        le,
+                    }),)*
+                }
+            }
+        }
+
         impl PartialEq for AnyShape<Vec3> {
             fn eq(&self, other: &Self) -> bool {
                 match (self, other) {

@@ -93,7 +93,7 @@ pub struct PreparedSphere<V: Point3 = Vec3> {
 impl<V: Point3<Lane = L>, L: Math> Shape<V> for Sphere<V> {
     type Prepared = PreparedSphere<V>;
 
-    #[inline]
+    #[inline(always)]
     fn at(&self, p: V, n: V, sampling: LightSampling) -> PreparedSphere<V> {
         let (c, p) = (self.center.to_lanes(), p.to_lanes());
         let r = self.radius;

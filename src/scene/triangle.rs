@@ -104,7 +104,7 @@ impl<P: Point3<Lane = L>, L: Math> TriangleMap<P> {
 impl<V: Point3<Lane = L>, L: Math> Shape<V> for Triangle<V> {
     type Prepared = PreparedTriangle<V>;
 
-    #[inline]
+    #[inline(always)]
     fn at(&self, p: V, n: V, sampling: LightSampling) -> PreparedTriangle<V> {
         let p = p.to_lanes();
         let v = self.v.map(|x| x.to_lanes() - p);

@@ -16,9 +16,11 @@
 //!   squared radius: exact, with no solve.
 //! - **Decentral case**: each azimuth between the polygon's two extreme directions meets one
 //!   inner and one outer edge. The azimuth comes from the area F(d) swept up to direction d,
-//!   F(d) = u₁·P, by a bracketed Newton solve on f32 sectors (F′ = ½(r_o² − r_i²) per radian)
-//!   and a last Newton step on the sectors summed in f64, where they do not cancel; the
-//!   squared radius is uniform between the two ellipses.
+//!   F(d) = u₁·P. The set-up tabulates F (in f64) at the vertices; a sample picks the sector
+//!   between two vertices adjacent in azimuth, where one outer and one inner arc bound the
+//!   region, seeds a quadratic, and takes bracketed Newton steps on those two arcs' f32 sweeps
+//!   (F′ = ½(r_o² − r_i²) per radian), then a last one on F summed in f64, where the sweeps do
+//!   not cancel; the squared radius is uniform between the two ellipses.
 //!
 //! Lifting the disk's point p to ω = (p, √(1 − |p|²)) gives the density n·ω / P per steradian.
 //! P, a sum of terms of both signs in the decentral case, cancels for small or distant lights;
@@ -30,7 +32,7 @@ use core::fmt;
 use glam::Vec3;
 
 use crate::frame::Frame;
-use crate::lane::{Lane, Mask, V2, V3, Widen, zip_map};
+use crate::lane::{Lane, Lanes, Mask, V2, V3, Widen, zip_map};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
 use crate::warp::common::clamp_u;
@@ -53,7 +55,8 @@ pub const PROJECTED_MIN_SR: f32 = 1e-4;
 /// so the cosine varies little over it.
 pub const PROJECTED_MAX_SPREAD: f32 = 1024.0;
 
-/// Iterations of the decentral case's azimuth solve.
+/// The most Newton (or bisection) steps of the decentral case's azimuth solve; it stops
+/// after a step below √ε of the sector, as a rule after one or two.
 const SOLVE_STEPS: usize = 12;
 
 /// One edge of the clipped polygon in the shading frame.
@@ -92,8 +95,6 @@ struct Projected<L: Math, const N: usize, const K: usize> {
     /// ½ Σ θ·m̂_z: P again, to the rounding of its cancelling terms; the scale of the azimuth
     /// solve, whose F ends there.
     sectors: L,
-    /// Σ |½·θ·m̂_z|, the scale of the f32 sums' rounding.
-    spread: L,
     /// The normal lies inside (or on the boundary of) the clipped polygon.
     central: L::Mask,
     /// Unit 2D directions of the least and greatest azimuth (decentral case).
@@ -101,6 +102,13 @@ struct Projected<L: Math, const N: usize, const K: usize> {
     hi: V2<L>,
     /// The vertices at those azimuths, where the region narrows to a point (local frame).
     tips: [V3<L>; 2],
+    /// The angle from `lo` to `hi`.
+    width: L,
+    /// The slots whose first vertex is at `lo` and at `hi` (whole numbers).
+    lo_slot: L,
+    hi_slot: L,
+    /// The decentral solve's table, one entry per slot in use.
+    starts: [Start<L>; K],
     /// The inside test of the whole (unclipped) polygon.
     edges: EdgePlanes<L, N>,
     /// The edges in f64 (world space), P in f64 and the unit normal: the decentral solve's
@@ -241,7 +249,8 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         let mut tips = [V3::default(); 2];
         let no = L::ZERO.gt(L::ZERO);
         let (mut found_lo, mut found_hi) = (no, no);
-        for x in e.iter().take(count) {
+        let (mut lo_slot, mut hi_slot) = (L::ZERO, L::ZERO);
+        for (slot, x) in e.iter().take(count).enumerate() {
             let (mut is_lo, mut is_hi) = (L::ZERO.le(L::ZERO), L::ZERO.le(L::ZERO));
             for y in e.iter().take(count) {
                 let c = cross2(x.da, y.da);
@@ -254,6 +263,8 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             let (take_lo, take_hi) = (is_lo & !found_lo, is_hi & !found_hi);
             lo = V2::select(take_lo, x.da, lo);
             hi = V2::select(take_hi, x.da, hi);
+            lo_slot = L::select(take_lo, L::c(slot as f64), lo_slot);
+            hi_slot = L::select(take_hi, L::c(slot as f64), hi_slot);
             found_lo = found_lo | is_lo;
             found_hi = found_hi | is_hi;
             let [t_lo, t_hi] = tips;
@@ -271,6 +282,22 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         let valid =
             p.ge(L::c(PROJECTED_MIN_SR as f64)) & known & ranged & p.is_finite() & n.z.is_finite();
         let empty = p.le(L::ZERO) & n.z.is_finite();
+        let mut starts = [Start::default(); K];
+        for (start, x) in starts.iter_mut().zip(&e).take(count) {
+            *start = Start::new(&e, &wide, count, lo, x.da, &frame, g.n);
+        }
+        // F at the vertices, made non-decreasing in azimuth: near a tip, where F grows as the
+        // square of the angle, a vertex just past it can round below the tip's F = 0, and the
+        // sector search, which orders the vertices by F, would skip it.
+        let rising = starts.map(|s| {
+            starts
+                .iter()
+                .take(count)
+                .fold(s.f, |f, t| L::select(t.psi.le(s.psi), f.max(t.f), f))
+        });
+        for (s, f) in starts.iter_mut().zip(rising) {
+            s.f = f;
+        }
         Self {
             frame,
             normal,
@@ -278,11 +305,14 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             count,
             p,
             sectors,
-            spread,
             central,
             lo,
             hi,
             tips,
+            width: cross2(lo, hi).atan2(lo.dot(hi)),
+            lo_slot,
+            hi_slot,
+            starts,
             // A sample is built in the shading frame and rotated back: two f32 rotations and a
             // normalisation, each a few ε, on top of the spherical maps' slack.
             edges: EdgePlanes::new(g.planes(), L::ONE, p).widened(L::c(8.0) * L::EPSILON),
@@ -312,7 +342,7 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             V3::default()
         };
         let d = if (!self.central).any() {
-            self.sample_decentral(target, u.y, u.x)
+            self.sample_decentral(u.y, u.x)
         } else {
             V3::default()
         };
@@ -412,115 +442,140 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             m_i = V3::select(i, e.m, m_i);
             z_i = W::<L>::select(i, e.mz, z_i);
         }
-        // The arc's point in the vertical plane through n and h (normal q), on h's side.
-        let part = |low: V3<W<L>>, m: V3<W<L>>, mz: W<L>| {
-            let x = cross3_in(m, q);
-            let x = x.scale(W::<L>::ONE.copysign(dot3_in(x, h)));
-            let c = cross3_in(low, x);
-            W::<L>::HALF * mz * angle_in(dot3_in(c, c).sqrt(), dot3_in(low, x))
-        };
-        full + part(low_o, m_o, z_o) + part(low_i, m_i, z_i)
+        full + wide_part(low_o, m_o, z_o, h, q) + wide_part(low_i, m_i, z_i, h, q)
     }
 
-    /// The decentral case: the azimuth where F = target by a bracketed Newton solve over the
-    /// chord between the extreme azimuths, then the squared radius uniform between the inner
-    /// and outer ellipses.
-    ///
-    /// The region narrows to a point at both extremes (a vertex), where F grows as the square
-    /// of the distance and Newton on F itself converges only linearly. The solve is on
-    /// √F − √target in the first half of the area and √(P − F) − √(P − target) in the second,
-    /// which are nearly linear there: one step from a seed at the right distance is exact for
-    /// a corner of straight sides.
+    /// The local 2D direction at angle ψ from `lo` (exactly `lo` and `hi` at the ends, where
+    /// the rotation by the whole width could round past the last vertex, where no edge lies).
     #[inline(always)]
-    fn sample_decentral(&self, target: L, share: L, radius: L) -> V3<L> {
-        type W<L> = <L as Widen>::Wide;
+    fn at_angle(&self, psi: L) -> V2<L> {
         let lo = self.lo;
-        let lo_perp = V2::new(-lo.y, lo.x);
-        let width = cross2(lo, self.hi).atan2(lo.dot(self.hi));
-        let total = self.sectors;
-        let upper = target.gt(L::HALF * total);
-        // The distance from the nearer end, as area: the target measured from that end.
-        let rest = L::select(upper, total - target, target);
-        let root = rest.sqrt();
-        let (mut a, mut b) = (L::ZERO, width);
-        // The seed of a rhombus: F = 2P·(ψ/Ψ)² up to the middle.
-        let k = (rest / (L::TWO * total)).sqrt() * width;
-        let mut psi = L::select(upper, width - k, k);
-        let mut best = L::c(f64::INFINITY);
-        let mut best_psi = L::ZERO;
-        let at_angle = |psi: L| {
-            let (sin, cos) = psi.sin_cos();
-            let d = V2::new(
-                lo.x.mul_add(cos, lo_perp.x * sin),
-                lo.y.mul_add(cos, lo_perp.y * sin),
-            );
-            // The ends exactly: the rotation by the whole width can round past the last
-            // vertex, where no edge lies.
-            V2::select(psi.ge(width), self.hi, V2::select(psi.le(L::ZERO), lo, d))
+        let (sin, cos) = psi.sin_cos();
+        let d = V2::new(
+            lo.x.mul_add(cos, -lo.y * sin),
+            lo.y.mul_add(cos, lo.x * sin),
+        );
+        V2::select(
+            psi.ge(self.width),
+            self.hi,
+            V2::select(psi.le(L::ZERO), lo, d),
+        )
+    }
+
+    /// The decentral case: the azimuth where F = u₁·P, then the squared radius uniform between
+    /// the inner and outer ellipses there.
+    ///
+    /// The sector (two vertices adjacent in azimuth) comes from the table of F at the vertices;
+    /// within it one outer and one inner arc bound the region, so that F is F at the sector's
+    /// start plus their two sweeps, ½·m̂_z·(angle along the arc). The seed is the quadratic with
+    /// the sector's end values and one end's slope (exact for a corner of straight sides);
+    /// Newton's steps on the f32 sweeps follow, bracketed, until a step is below √ε of the
+    /// sector (the next would be below ε). The two sweeps cancel by about the sector's angular
+    /// width over its area: where that exceeds P, their f32 rounding would reach u₁, and one
+    /// last step is taken on F summed in f64.
+    #[inline(always)]
+    fn sample_decentral(&self, share: L, radius: L) -> V3<L> {
+        type W<L> = <L as Widen>::Wide;
+        let target = share * self.p;
+        // The sector: from the vertex with the greatest F ≤ target to the vertex with the
+        // least F above it (the greatest azimuth if none is); of vertices with equal F, the
+        // first slot, which is the same vertex whether a packet keeps N edges or 2N slots.
+        let (mut k0, mut k1) = (self.lo_slot, self.hi_slot);
+        let (mut f0, mut f1) = (L::c(f64::NEG_INFINITY), L::c(f64::INFINITY));
+        let (mut a0, mut a1) = (L::ZERO, self.width);
+        for (i, s) in self.starts.iter().enumerate().take(self.count) {
+            let slot = L::c(i as f64);
+            // By F, then (where F ties, as it rounds near a tip) by azimuth.
+            let start = s.f.le(target) & (s.f.gt(f0) | (s.f.eq(f0) & s.psi.gt(a0)));
+            let end = s.f.gt(target) & (s.f.lt(f1) | (s.f.eq(f1) & s.psi.lt(a1)));
+            k0 = L::select(start, slot, k0);
+            f0 = L::select(start, s.f, f0);
+            a0 = L::select(start, s.psi, a0);
+            k1 = L::select(end, slot, k1);
+            f1 = L::select(end, s.f, f1);
+            a1 = L::select(end, s.psi, a1);
+        }
+        let (k0, k1) = (k0.widen(), k1.widen());
+        let table = &self.starts;
+        let (psi0, f0) = (pick(table, k0, |s| s.psi), pick(table, k0, |s| s.f));
+        let (psi1, f1) = (pick(table, k1, |s| s.psi), pick(table, k1, |s| s.f));
+        let (s0, s1) = (pick(table, k0, |s| s.after), pick(table, k1, |s| s.before));
+        let (outer, inner) = (pick(table, k0, |s| s.outer), pick(table, k0, |s| s.inner));
+        let (m_o, m_i) = (
+            pick3(&self.e, outer, |e| e.m),
+            pick3(&self.e, inner, |e| e.m),
+        );
+        let d0 = pick2(&self.e, k0, |e| e.da);
+        let width = (psi1 - psi0).max(L::ZERO);
+        let span = (f1 - f0).max(L::ZERO);
+        let t = (target - f0).max(L::ZERO).min(span);
+        // The sweeps from the sector's start, and F′ = ½(r_o² − r_i²).
+        let (start_o, start_i) = (arc_point(m_o, d0), arc_point(m_i, d0));
+        let sweep = |d: V2<L>| {
+            L::HALF * m_o.z * angle(start_o, arc_point(m_o, d))
+                + L::HALF * m_i.z * angle(start_i, arc_point(m_i, d))
         };
-        let mut last = (V2::default(), V3::default(), V3::default());
-        // A lane is done once F is within its f32 rounding of the target, or its step within
-        // an ulp of the angle; it then stays where it is, so that the steps the other lanes
-        // of a packet still take repeat its values bit for bit, as its scalar call stops.
-        let noise = L::c(4.0) * L::EPSILON * self.spread;
-        let tiny = L::EPSILON * width;
-        let mut done = L::ZERO.gt(L::ZERO);
+        let slope = |d: V2<L>| {
+            let (_, ro) = radii(m_o, d);
+            let (_, ri) = radii(m_i, d);
+            L::HALF * (ro - ri)
+        };
+        let mut x = seed(t, span, width, s0, s1);
+        let (mut a, mut b) = (L::ZERO, width);
+        // A lane is done once its step is below √ε of the sector; it then stays where it is,
+        // so that the steps the other lanes of a packet still take repeat its values bit for
+        // bit, as its scalar call stops.
+        let small = L::EPSILON.sqrt() * width;
+        let mut done = width.le(L::ZERO) | span.le(L::ZERO);
         for _ in 0..SOLVE_STEPS {
-            let d = at_angle(psi);
-            let (f, o, i) = self.swept(d);
-            // The closest so far: once converged, rounding can send a step out of the bracket,
-            // and the bisection that follows away from the solution.
-            let err = (f - target).abs();
-            let better = err.le(best);
-            best = L::select(better, err, best);
-            best_psi = L::select(better, psi, best_psi);
-            last = (
-                V2::select(better, d, last.0),
-                V3::select(better, o, last.1),
-                V3::select(better, i, last.2),
-            );
-            let below = f.lt(target);
-            a = L::select(below, psi, a);
-            b = L::select(below, b, psi);
-            let (_, ro) = radii(o, d);
-            let (_, ri) = radii(i, d);
-            // dF/dψ = ½(r_o² − r_i²); d√G/dψ = ±F′/(2√G).
-            let slope = L::HALF * (ro - ri);
-            let g = L::select(upper, total - f, f).max(L::ZERO).sqrt();
-            let dg = L::select(upper, -slope, slope) / (L::TWO * g);
-            let next = psi - (g - root) / dg;
-            // Newton where it stays in the bracket, else bisection.
-            let to = L::select(next.gt(a) & next.lt(b), next, L::HALF * (a + b));
-            done = done | err.le(noise) | (to - psi).abs().le(tiny);
-            psi = L::select(done, psi, to);
             if done.all() {
                 break;
             }
+            let d = self.at_angle(psi0 + x);
+            let r = sweep(d) - t;
+            let below = r.lt(L::ZERO);
+            a = L::select(below, x, a);
+            b = L::select(below, b, x);
+            let next = x - r / slope(d);
+            // Newton where it stays in the bracket, else bisection.
+            let next = L::select(next.gt(a) & next.lt(b), next, L::HALF * (a + b));
+            let exact = r.eq(L::ZERO);
+            let converged = (next - x).abs().le(small);
+            x = L::select(done | exact, x, next);
+            done = done | exact | converged;
         }
-        let (d, o, i) = last;
-        // One Newton step on the sectors summed in f64: in f32 they cancel by up to
-        // PROJECTED_MAX_SPREAD, which leaves F an error of that many ε of P.
-        // On √F (or √(P − F)) as the solve, which stays well-conditioned at the tips, where
-        // F′ → 0.
-        let (_, ro) = radii(o, d);
-        let (_, ri) = radii(i, d);
-        let slope = L::HALF * (ro - ri);
-        let f = self.swept_wide(d);
-        let target_wide = share.widen() * self.wide_p;
-        let up = target_wide.gt(W::<L>::HALF * self.wide_p);
-        let g = W::<L>::select(up, self.wide_p - f, f)
-            .max(W::<L>::ZERO)
-            .sqrt();
-        let root = W::<L>::select(up, self.wide_p - target_wide, target_wide)
-            .max(W::<L>::ZERO)
-            .sqrt();
-        let dg = L::select(L::narrow_mask(up), -slope, slope) / (L::TWO * L::narrow(g));
-        let refined = (best_psi - L::narrow(g - root) / dg).clamp(L::ZERO, width);
-        let refine = slope.gt(L::ZERO) & refined.is_finite();
-        let d = V2::select(refine, at_angle(refined), d);
-        let (_, o, i) = self.swept(d);
-        let (zo, ro) = radii(o, d);
-        let (zi, ri) = radii(i, d);
+        // The f32 sweeps are each within a few ε of their size, at most ½ of the sector's
+        // width: past P, one step on F in f64.
+        let wide = width.gt(self.p);
+        if wide.any() {
+            let d = self.at_angle(psi0 + x);
+            let h = widen3(self.frame.to_world(V3::new(d.x, d.y, L::ZERO)));
+            let q = cross3_in(self.wide_n, h);
+            let arc = |k: W<L>, later: L| {
+                let low = V3::select(
+                    later.widen().gt(W::<L>::ZERO),
+                    pick3(&self.wide, k, |e| e.b),
+                    pick3(&self.wide, k, |e| e.a),
+                );
+                wide_part(
+                    low,
+                    pick3(&self.wide, k, |e| e.m),
+                    pick(&self.wide, k, |e| e.mz),
+                    h,
+                    q,
+                )
+            };
+            let f = pick(table, k0, |s| s.full)
+                + arc(outer, pick(table, k0, |s| s.outer_later))
+                + arc(inner, pick(table, k0, |s| s.inner_later));
+            let residual = L::narrow(f - share.widen() * self.wide_p);
+            let g = slope(d);
+            let stepped = (x - residual / g).max(L::ZERO).min(width);
+            x = L::select(wide & g.gt(L::ZERO) & stepped.is_finite(), stepped, x);
+        }
+        let d = self.at_angle(psi0 + x);
+        let (zo, ro) = radii(m_o, d);
+        let (zi, ri) = radii(m_i, d);
         // (1 − u)·a + u·b, sums of non-negative terms: at u → 1 against the horizon (zo = 0)
         // z² is (1 − u)·zi to the rounding of each factor, where zi − u·zi would cancel.
         let r2 = (L::ONE - radius).mul_add(ri, radius * ro);
@@ -578,6 +633,156 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
 fn unit2<L: Math>(v: V2<L>) -> V2<L> {
     let k = L::ONE / v.length_squared().sqrt();
     V2::new(v.x * k, v.y * k)
+}
+
+/// ½·m̂_z·(the angle from `low` along the great circle with unit normal m to its point at the
+/// world azimuth h, q = n × h): one edge's sweep up to h, in f64. The arc's point is taken in
+/// the vertical plane through n and h (normal q), on h's side.
+#[inline(always)]
+fn wide_part<T: Lane>(low: V3<T>, m: V3<T>, mz: T, h: V3<T>, q: V3<T>) -> T {
+    let x = cross3_in(m, q);
+    let x = x.scale(T::ONE.copysign(dot3_in(x, h)));
+    let c = cross3_in(low, x);
+    T::HALF * mz * angle_in(dot3_in(c, c).sqrt(), dot3_in(low, x))
+}
+
+/// One vertex of the decentral case, where a sector of the solve starts: see
+/// [`Projected::sample_decentral`].
+#[derive(Clone, Copy, Default)]
+struct Start<L: Math> {
+    /// The vertex's angle from the least azimuth.
+    psi: L,
+    /// F there, rounded from f64.
+    f: L,
+    /// The f64 sum of the sweeps of the edges wholly at or before it.
+    full: L::Wide,
+    /// The slots of the outer and inner edges that span the azimuths just after it, and 1
+    /// where that edge's end (not its start) is the earlier one, else 0.
+    outer: L::Wide,
+    inner: L::Wide,
+    outer_later: L,
+    inner_later: L,
+    /// F′ = ½(r_o² − r_i²) there, on the edges just after it and on those just before (0
+    /// where there are none).
+    after: L,
+    before: L,
+}
+
+impl<L: Math> Start<L> {
+    /// The entry at the vertex with local 2D azimuth d (the same bits as its edges' `da`,
+    /// `db`, so that the tests against them are exact).
+    #[inline(always)]
+    fn new<const K: usize>(
+        e: &[Edge<L>; K],
+        wide: &[WideEdge<L::Wide>; K],
+        count: usize,
+        lo: V2<L>,
+        d: V2<L>,
+        frame: &Frame<V3<L>>,
+        n: V3<L::Wide>,
+    ) -> Self {
+        type W<L> = <L as Widen>::Wide;
+        let to_wide = |m: L::Mask| L::select(m, L::ONE, L::ZERO).widen().gt(W::<L>::ZERO);
+        let zero = W::<L>::ZERO;
+        // F here is the edges wholly before d plus the sweeps, up to d itself, of the two
+        // that end at or pass over it: the edge ending at the vertex counts to d's rounded
+        // azimuth, not whole to the vertex, so that F and ψ describe the same direction
+        // (against the horizon's arc, a rounded azimuth moves F by ε of the disk's area).
+        let (mut full, mut before) = (zero, zero);
+        let mut s = Self::default();
+        let (mut after_o, mut after_i) = (V3::default(), V3::default());
+        let (mut before_o, mut before_i) = (V3::default(), V3::default());
+        let mut arcs = [(V3::<W<L>>::default(), V3::default(), zero); 2];
+        for (slot, (x, w)) in e.iter().zip(wide).enumerate().take(count) {
+            let (ca, cb) = (cross2(x.da, d), cross2(x.db, d));
+            let (a_le, b_le) = (ca.ge(L::ZERO), cb.ge(L::ZERO));
+            let (a_lt, b_lt) = (ca.gt(L::ZERO), cb.gt(L::ZERO));
+            full = full + W::<L>::select(to_wide(a_le & b_le), w.area, zero);
+            before = before + W::<L>::select(to_wide(a_lt & b_lt), w.area, zero);
+            let spans = (a_le & !b_le) | (b_le & !a_le);
+            let ends = (a_lt & !b_lt) | (b_lt & !a_lt);
+            let (o, i) = (x.m.z.gt(L::ZERO), x.m.z.lt(L::ZERO));
+            let index = W::<L>::c(slot as f64);
+            let later = L::select(a_le, L::ZERO, L::ONE);
+            s.outer = W::<L>::select(to_wide(spans & o), index, s.outer);
+            s.inner = W::<L>::select(to_wide(spans & i), index, s.inner);
+            s.outer_later = L::select(spans & o, later, s.outer_later);
+            s.inner_later = L::select(spans & i, later, s.inner_later);
+            after_o = V3::select(spans & o, x.m, after_o);
+            after_i = V3::select(spans & i, x.m, after_i);
+            before_o = V3::select(ends & o, x.m, before_o);
+            before_i = V3::select(ends & i, x.m, before_i);
+            let low = V3::select(to_wide(a_lt), w.a, w.b);
+            for (arc, take) in arcs.iter_mut().zip([ends & o, ends & i]) {
+                let t = to_wide(take);
+                *arc = (
+                    V3::select(t, low, arc.0),
+                    V3::select(t, w.m, arc.1),
+                    W::<L>::select(t, w.mz, arc.2),
+                );
+            }
+        }
+        let h = widen3(frame.to_world(V3::new(d.x, d.y, L::ZERO)));
+        let q = cross3_in(n, h);
+        let f = arcs
+            .iter()
+            .fold(before, |f, &(low, m, mz)| f + wide_part(low, m, mz, h, q));
+        let slope = |o: V3<L>, i: V3<L>| {
+            let (_, ro) = radii(o, d);
+            let (_, ri) = radii(i, d);
+            let g = L::HALF * (ro - ri);
+            L::select(g.is_finite(), g, L::ZERO)
+        };
+        Self {
+            psi: cross2(lo, d).atan2(lo.dot(d)).max(L::ZERO),
+            f: L::narrow(f),
+            full,
+            after: slope(after_o, after_i),
+            before: slope(before_o, before_i),
+            ..s
+        }
+    }
+}
+
+/// Field `f` of entry k of `table` in each lane (k a whole number in each): a load in the
+/// scalar form, a lane-by-lane fetch in the packets, where selecting through the whole table
+/// would cost as much as the solve.
+#[inline(always)]
+fn pick<S, T: Lanes, K: Lanes<Scalar = f64>>(table: &[S], k: K, f: impl Fn(&S) -> T) -> T {
+    T::from_fn(|i| {
+        table
+            .get(k.lane(i) as usize)
+            .map_or(T::Scalar::default(), |s| f(s).lane(i))
+    })
+}
+
+#[inline(always)]
+fn pick2<S, T: Lanes, K: Lanes<Scalar = f64>>(table: &[S], k: K, f: impl Fn(&S) -> V2<T>) -> V2<T> {
+    V2::new(pick(table, k, |s| f(s).x), pick(table, k, |s| f(s).y))
+}
+
+#[inline(always)]
+fn pick3<S, T: Lanes, K: Lanes<Scalar = f64>>(table: &[S], k: K, f: impl Fn(&S) -> V3<T>) -> V3<T> {
+    V3::new(
+        pick(table, k, |s| f(s).x),
+        pick(table, k, |s| f(s).y),
+        pick(table, k, |s| f(s).z),
+    )
+}
+
+/// x ∈ [0, w] where the quadratic through (0, 0) and (w, F) with slope s₀ at 0 reaches t (with
+/// slope s₁ at w, measured from w, where the first would not be monotone): the seed of the
+/// decentral solve. It is exact for a corner of straight sides (s₀ = 0), where F grows as x².
+#[inline(always)]
+fn seed<L: Math>(t: L, span: L, w: L, s0: L, s1: L) -> L {
+    let forward = (s0 * w).le(L::TWO * span);
+    let (s, t) = (L::select(forward, s0, s1), L::select(forward, t, span - t));
+    // G(x) = s·x + c·x² with c = (F − s·w)/w²: x = 2t / (s + √(s² + 4ct)).
+    let c4t = L::c(4.0) * (span - s * w) * t / (w * w);
+    let x = L::TWO * t / (s + (s * s + c4t).max(L::ZERO).sqrt());
+    let x = L::select(t.le(L::ZERO), L::ZERO, x);
+    let x = L::select(forward, x, w - x);
+    L::select(x.is_finite(), x.max(L::ZERO).min(w), L::HALF * w)
 }
 
 #[inline(always)]

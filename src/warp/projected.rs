@@ -283,7 +283,9 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             p.ge(L::c(PROJECTED_MIN_SR as f64)) & known & ranged & p.is_finite() & n.z.is_finite();
         let empty = p.le(L::ZERO) & n.z.is_finite();
         let mut starts = [Start::default(); K];
-        for (start, x) in starts.iter_mut().zip(&e).take(count) {
+        // Only the decentral case reads the table.
+        let rows = if central.all() { 0 } else { count };
+        for (start, x) in starts.iter_mut().zip(&e).take(rows) {
             *start = Start::new(&e, &wide, count, lo, x.da, &frame, g.n);
         }
         // F at the vertices, made non-decreasing in azimuth: near a tip, where F grows as the
@@ -292,7 +294,7 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         let rising = starts.map(|s| {
             starts
                 .iter()
-                .take(count)
+                .take(rows)
                 .fold(s.f, |f, t| L::select(t.psi.le(s.psi), f.max(t.f), f))
         });
         for (s, f) in starts.iter_mut().zip(rising) {
@@ -544,35 +546,33 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             x = L::select(done | exact, x, next);
             done = done | exact | converged;
         }
-        // The f32 sweeps are each within a few ε of their size, at most ½ of the sector's
-        // width: past P, one step on F in f64.
-        let wide = width.gt(self.p);
-        if wide.any() {
-            let d = self.at_angle(psi0 + x);
-            let h = widen3(self.frame.to_world(V3::new(d.x, d.y, L::ZERO)));
-            let q = cross3_in(self.wide_n, h);
-            let arc = |k: W<L>, later: L| {
-                let low = V3::select(
-                    later.widen().gt(W::<L>::ZERO),
-                    pick3(&self.wide, k, |e| e.b),
-                    pick3(&self.wide, k, |e| e.a),
-                );
-                wide_part(
-                    low,
-                    pick3(&self.wide, k, |e| e.m),
-                    pick(&self.wide, k, |e| e.mz),
-                    h,
-                    q,
-                )
-            };
-            let f = pick(table, k0, |s| s.full)
-                + arc(outer, pick(table, k0, |s| s.outer_later))
-                + arc(inner, pick(table, k0, |s| s.inner_later));
-            let residual = L::narrow(f - share.widen() * self.wide_p);
-            let g = slope(d);
-            let stepped = (x - residual / g).max(L::ZERO).min(width);
-            x = L::select(wide & g.gt(L::ZERO) & stepped.is_finite(), stepped, x);
-        }
+        // One last step on F in f64. The f32 sweeps are off by a few ε of the arcs' angles,
+        // and by more where an arc's plane passes near the normal (its f32 plane, rotated into
+        // the frame, tilts by ε over a small m̂_z): past the median ulp of u₁ in most sectors.
+        let d = self.at_angle(psi0 + x);
+        let h = widen3(self.frame.to_world(V3::new(d.x, d.y, L::ZERO)));
+        let q = cross3_in(self.wide_n, h);
+        let arc = |k: W<L>, later: L| {
+            let low = V3::select(
+                later.widen().gt(W::<L>::ZERO),
+                pick3(&self.wide, k, |e| e.b),
+                pick3(&self.wide, k, |e| e.a),
+            );
+            wide_part(
+                low,
+                pick3(&self.wide, k, |e| e.m),
+                pick(&self.wide, k, |e| e.mz),
+                h,
+                q,
+            )
+        };
+        let f = pick(table, k0, |s| s.full)
+            + arc(outer, pick(table, k0, |s| s.outer_later))
+            + arc(inner, pick(table, k0, |s| s.inner_later));
+        let residual = L::narrow(f - share.widen() * self.wide_p);
+        let g = slope(d);
+        let stepped = (x - residual / g).max(L::ZERO).min(width);
+        let x = L::select(g.gt(L::ZERO) & stepped.is_finite(), stepped, x);
         let d = self.at_angle(psi0 + x);
         let (zo, ro) = radii(m_o, d);
         let (zi, ri) = radii(m_i, d);

@@ -285,8 +285,14 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         let mut starts = [Start::default(); K];
         // Only the decentral case reads the table.
         let rows = if central.all() { 0 } else { count };
+        // A slot that repeats the previous slot's vertex (clipping kept 2N) repeats its entry.
+        let mut last: Option<(V2<L>, Start<L>)> = None;
         for (start, x) in starts.iter_mut().zip(&e).take(rows) {
-            *start = Start::new(&e, &wide, count, lo, x.da, &frame, g.n);
+            *start = match last {
+                Some((d, s)) if (x.da.x.eq(d.x) & x.da.y.eq(d.y)).all() => s,
+                _ => Start::new(&e, &wide, count, lo, x.da, &frame, g.n),
+            };
+            last = Some((x.da, *start));
         }
         // F at the vertices, made non-decreasing in azimuth: near a tip, where F grows as the
         // square of the angle, a vertex just past it can round below the tip's F = 0, and the
@@ -689,49 +695,62 @@ impl<L: Math> Start<L> {
         // azimuth, not whole to the vertex, so that F and ψ describe the same direction
         // (against the horizon's arc, a rounded azimuth moves F by ε of the disk's area).
         let (mut full, mut before) = (zero, zero);
-        let mut s = Self::default();
-        let (mut after_o, mut after_i) = (V3::default(), V3::default());
-        let (mut before_o, mut before_i) = (V3::default(), V3::default());
-        let mut arcs = [(V3::<W<L>>::default(), V3::default(), zero); 2];
-        for (slot, (x, w)) in e.iter().zip(wide).enumerate().take(count) {
+        // The loop keeps slot numbers only (its selects were most of the set-up's time); the
+        // edges are read by index after it. NONE reads as an edge of zeros.
+        let none = L::c(1e9);
+        let (mut after_o, mut after_i, mut before_o, mut before_i) = (none, none, none, none);
+        let (mut later_o, mut later_i, mut first_o, mut first_i) =
+            (L::ZERO, L::ZERO, L::ZERO, L::ZERO);
+        for (slot, x) in e.iter().enumerate().take(count) {
             let (ca, cb) = (cross2(x.da, d), cross2(x.db, d));
             let (a_le, b_le) = (ca.ge(L::ZERO), cb.ge(L::ZERO));
             let (a_lt, b_lt) = (ca.gt(L::ZERO), cb.gt(L::ZERO));
-            full = full + W::<L>::select(to_wide(a_le & b_le), w.area, zero);
-            before = before + W::<L>::select(to_wide(a_lt & b_lt), w.area, zero);
+            let area = wide.get(slot).map_or(zero, |w| w.area);
+            full = full + W::<L>::select(to_wide(a_le & b_le), area, zero);
+            before = before + W::<L>::select(to_wide(a_lt & b_lt), area, zero);
             let spans = (a_le & !b_le) | (b_le & !a_le);
             let ends = (a_lt & !b_lt) | (b_lt & !a_lt);
             let (o, i) = (x.m.z.gt(L::ZERO), x.m.z.lt(L::ZERO));
-            let index = W::<L>::c(slot as f64);
-            let later = L::select(a_le, L::ZERO, L::ONE);
-            s.outer = W::<L>::select(to_wide(spans & o), index, s.outer);
-            s.inner = W::<L>::select(to_wide(spans & i), index, s.inner);
-            s.outer_later = L::select(spans & o, later, s.outer_later);
-            s.inner_later = L::select(spans & i, later, s.inner_later);
-            after_o = V3::select(spans & o, x.m, after_o);
-            after_i = V3::select(spans & i, x.m, after_i);
-            before_o = V3::select(ends & o, x.m, before_o);
-            before_i = V3::select(ends & i, x.m, before_i);
-            let low = V3::select(to_wide(a_lt), w.a, w.b);
-            for (arc, take) in arcs.iter_mut().zip([ends & o, ends & i]) {
-                let t = to_wide(take);
-                *arc = (
-                    V3::select(t, low, arc.0),
-                    V3::select(t, w.m, arc.1),
-                    W::<L>::select(t, w.mz, arc.2),
-                );
-            }
+            let index = L::c(slot as f64);
+            let (later, first) = (
+                L::select(a_le, L::ZERO, L::ONE),
+                L::select(a_lt, L::ONE, L::ZERO),
+            );
+            after_o = L::select(spans & o, index, after_o);
+            after_i = L::select(spans & i, index, after_i);
+            later_o = L::select(spans & o, later, later_o);
+            later_i = L::select(spans & i, later, later_i);
+            before_o = L::select(ends & o, index, before_o);
+            before_i = L::select(ends & i, index, before_i);
+            first_o = L::select(ends & o, first, first_o);
+            first_i = L::select(ends & i, first, first_i);
         }
         let h = widen3(frame.to_world(V3::new(d.x, d.y, L::ZERO)));
         let q = cross3_in(n, h);
-        let f = arcs
-            .iter()
-            .fold(before, |f, &(low, m, mz)| f + wide_part(low, m, mz, h, q));
-        let slope = |o: V3<L>, i: V3<L>| {
-            let (_, ro) = radii(o, d);
-            let (_, ri) = radii(i, d);
+        // The sweep up to d of the edge in slot k, from its end before d (a where `first`).
+        let sweep = |k: L, first: L| {
+            let k = k.widen();
+            let low = V3::select(
+                first.widen().gt(zero),
+                pick3(wide, k, |w| w.a),
+                pick3(wide, k, |w| w.b),
+            );
+            wide_part(low, pick3(wide, k, |w| w.m), pick(wide, k, |w| w.mz), h, q)
+        };
+        let f = before + sweep(before_o, first_o) + sweep(before_i, first_i);
+        let slope = |o: L, i: L| {
+            let (_, ro) = radii(pick3(e, o.widen(), |x| x.m), d);
+            let (_, ri) = radii(pick3(e, i.widen(), |x| x.m), d);
             let g = L::HALF * (ro - ri);
             L::select(g.is_finite(), g, L::ZERO)
+        };
+        let found = |k: L| L::select(k.lt(none), k, L::ZERO).widen();
+        let s = Self {
+            outer: found(after_o),
+            inner: found(after_i),
+            outer_later: later_o,
+            inner_later: later_i,
+            ..Self::default()
         };
         Self {
             psi: cross2(lo, d).atan2(lo.dot(d)).max(L::ZERO),

@@ -544,13 +544,17 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             let below = r.lt(L::ZERO);
             a = L::select(below, x, a);
             b = L::select(below, b, x);
-            let next = x - r / slope(d);
+            let newton = x - r / slope(d);
+            // A Newton step below the tolerance ends the solve: near the root it can round
+            // onto or past the end of the bracket that x itself just became, where the
+            // bisection would throw the converged x away.
+            let converged = (newton - x).abs().le(small) | r.eq(L::ZERO);
+            let inside = newton.gt(a) & newton.lt(b);
             // Newton where it stays in the bracket, else bisection.
-            let next = L::select(next.gt(a) & next.lt(b), next, L::HALF * (a + b));
-            let exact = r.eq(L::ZERO);
-            let converged = (next - x).abs().le(small);
-            x = L::select(done | exact, x, next);
-            done = done | exact | converged;
+            let next = L::select(inside, newton, L::HALF * (a + b));
+            let next = L::select(converged, L::select(inside, newton, x), next);
+            x = L::select(done, x, next);
+            done = done | converged;
         }
         // One last step on F in f64. The f32 sweeps are off by a few ε of the arcs' angles,
         // and by more where an arc's plane passes near the normal (its f32 plane, rotated into

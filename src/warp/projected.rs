@@ -478,9 +478,9 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
     /// start plus their two sweeps, ½·m̂_z·(angle along the arc). The seed is the quadratic with
     /// the sector's end values and one end's slope (exact for a corner of straight sides);
     /// Newton's steps on the f32 sweeps follow, bracketed, until a step is below √ε of the
-    /// sector (the next would be below ε). The two sweeps cancel, and an arc whose plane passes
-    /// near the normal carries its f32 plane's tilt: their rounding reaches u₁, so one last step
-    /// is always taken on F summed in f64.
+    /// sector (the next would be below ε). The two sweeps cancel by about the sector's angular
+    /// width over its area: where that exceeds P, their f32 rounding would reach u₁, and one
+    /// last step is taken on F summed in f64.
     #[inline(always)]
     fn sample_decentral(&self, share: L, radius: L) -> V3<L> {
         type W<L> = <L as Widen>::Wide;
@@ -544,17 +544,13 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             let below = r.lt(L::ZERO);
             a = L::select(below, x, a);
             b = L::select(below, b, x);
-            let newton = x - r / slope(d);
-            // A Newton step below the tolerance ends the solve: near the root it can round
-            // onto or past the end of the bracket that x itself just became, where the
-            // bisection would throw the converged x away.
-            let converged = (newton - x).abs().le(small) | r.eq(L::ZERO);
-            let inside = newton.gt(a) & newton.lt(b);
+            let next = x - r / slope(d);
             // Newton where it stays in the bracket, else bisection.
-            let next = L::select(inside, newton, L::HALF * (a + b));
-            let next = L::select(converged, L::select(inside, newton, x), next);
-            x = L::select(done, x, next);
-            done = done | converged;
+            let next = L::select(next.gt(a) & next.lt(b), next, L::HALF * (a + b));
+            let exact = r.eq(L::ZERO);
+            let converged = (next - x).abs().le(small);
+            x = L::select(done | exact, x, next);
+            done = done | exact | converged;
         }
         // One last step on F in f64. The f32 sweeps are off by a few ε of the arcs' angles,
         // and by more where an arc's plane passes near the normal (its f32 plane, rotated into
@@ -699,8 +695,8 @@ impl<L: Math> Start<L> {
         // azimuth, not whole to the vertex, so that F and ψ describe the same direction
         // (against the horizon's arc, a rounded azimuth moves F by ε of the disk's area).
         let (mut full, mut before) = (zero, zero);
-        // The loop keeps slot numbers only; the edges are read by index after it. `none` reads
-        // as an edge of zeros.
+        // The loop keeps slot numbers only (its selects were most of the set-up's time); the
+        // edges are read by index after it. NONE reads as an edge of zeros.
         let none = L::c(1e9);
         let (mut after_o, mut after_i, mut before_o, mut before_i) = (none, none, none, none);
         let (mut later_o, mut later_i, mut first_o, mut first_i) =
@@ -768,8 +764,8 @@ impl<L: Math> Start<L> {
 }
 
 /// Field `f` of entry k of `table` in each lane (k a whole number in each): a load in the
-/// scalar form and a lane-by-lane fetch in the packets, rather than a select through every
-/// entry.
+/// scalar form, a lane-by-lane fetch in the packets, where selecting through the whole table
+/// would cost as much as the solve.
 #[inline(always)]
 fn pick<S, T: Lanes, K: Lanes<Scalar = f64>>(table: &[S], k: K, f: impl Fn(&S) -> T) -> T {
     T::from_fn(|i| {

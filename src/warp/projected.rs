@@ -478,9 +478,9 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
     /// start plus their two sweeps, ½·m̂_z·(angle along the arc). The seed is the quadratic with
     /// the sector's end values and one end's slope (exact for a corner of straight sides);
     /// Newton's steps on the f32 sweeps follow, bracketed, until a step is below √ε of the
-    /// sector (the next would be below ε). The two sweeps cancel by about the sector's angular
-    /// width over its area: where that exceeds P, their f32 rounding would reach u₁, and one
-    /// last step is taken on F summed in f64.
+    /// sector (the next would be below ε). The two sweeps cancel, and an arc whose plane passes
+    /// near the normal carries its f32 plane's tilt: their rounding reaches u₁, so one last step
+    /// is always taken on F summed in f64.
     #[inline(always)]
     fn sample_decentral(&self, share: L, radius: L) -> V3<L> {
         type W<L> = <L as Widen>::Wide;
@@ -695,8 +695,8 @@ impl<L: Math> Start<L> {
         // azimuth, not whole to the vertex, so that F and ψ describe the same direction
         // (against the horizon's arc, a rounded azimuth moves F by ε of the disk's area).
         let (mut full, mut before) = (zero, zero);
-        // The loop keeps slot numbers only (its selects were most of the set-up's time); the
-        // edges are read by index after it. NONE reads as an edge of zeros.
+        // The loop keeps slot numbers only; the edges are read by index after it. `none` reads
+        // as an edge of zeros.
         let none = L::c(1e9);
         let (mut after_o, mut after_i, mut before_o, mut before_i) = (none, none, none, none);
         let (mut later_o, mut later_i, mut first_o, mut first_i) =
@@ -764,8 +764,8 @@ impl<L: Math> Start<L> {
 }
 
 /// Field `f` of entry k of `table` in each lane (k a whole number in each): a load in the
-/// scalar form, a lane-by-lane fetch in the packets, where selecting through the whole table
-/// would cost as much as the solve.
+/// scalar form and a lane-by-lane fetch in the packets, rather than a select through every
+/// entry.
 #[inline(always)]
 fn pick<S, T: Lanes, K: Lanes<Scalar = f64>>(table: &[S], k: K, f: impl Fn(&S) -> T) -> T {
     T::from_fn(|i| {

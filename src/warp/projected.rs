@@ -19,8 +19,9 @@
 //!   F(d) = u₁·P. The set-up tabulates F (in f64) at the vertices; a sample picks the sector
 //!   between two vertices adjacent in azimuth, where one outer and one inner arc bound the
 //!   region, seeds a quadratic, and takes bracketed Newton steps on those two arcs' f32 sweeps
-//!   (F′ = ½(r_o² − r_i²) per radian), then a last one on F summed in f64, where the sweeps do
-//!   not cancel; the squared radius is uniform between the two ellipses.
+//!   (F′ = ½(r_o² − r_i²) per radian), then steps on F summed in f64, where the sweeps do not
+//!   cancel, to √ε of the distance to the nearer tip; the squared radius is uniform between the
+//!   two ellipses.
 //!
 //! Lifting the disk's point p to ω = (p, √(1 − |p|²)) gives the density n·ω / P per steradian.
 //! P, a sum of terms of both signs in the decentral case, cancels for small or distant lights;
@@ -48,9 +49,9 @@ pub const PROJECTED_MIN_SR: f32 = 1e-4;
 /// central case; in the decentral one about the light's distance from the normal over its
 /// size, and more for a light seen at a grazing angle or straddling the horizon) for which a
 /// polygon is sampled by projected solid angle. The azimuth solve runs on f32 sectors, which
-/// cancel by this ratio, and ends with one Newton step on the sectors in f64; up to 1024 that
-/// step lands within about an ulp of the output (measured: 99 % of samples within 1.1 ulp,
-/// the worst 3e-5 in u₁ over 1.6e5 random triangles), at 4096 some solves end too far for it.
+/// cancel by this ratio, and ends with Newton steps on the sectors in f64; up to 1024 these
+/// land within about an ulp of the output (measured: 99 % of samples within 1.1 ulp, the worst
+/// 3e-5 in u₁ over 1.6e5 random triangles), at 4096 some solves end too far for them.
 /// Beyond, the light is sampled by solid angle: it is small or thin as seen from the receiver,
 /// so the cosine varies little over it.
 pub const PROJECTED_MAX_SPREAD: f32 = 1024.0;
@@ -58,6 +59,10 @@ pub const PROJECTED_MAX_SPREAD: f32 = 1024.0;
 /// The most Newton (or bisection) steps of the decentral case's azimuth solve; it stops
 /// after a step below √ε of the sector, as a rule after one or two.
 const SOLVE_STEPS: usize = 12;
+
+/// The most Newton (or bisection) steps of the decentral solve on F summed in f64, which
+/// starts where the f32 steps end.
+const WIDE_STEPS: usize = 6;
 
 /// One edge of the clipped polygon in the shading frame.
 #[derive(Clone, Copy, Default)]
@@ -479,11 +484,11 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
     /// the sector's end values and one end's slope (exact for a corner of straight sides);
     /// Newton's steps on the f32 sweeps follow, bracketed, until a step is below √ε of the
     /// sector (the next would be below ε). The two sweeps cancel, and an arc whose plane passes
-    /// near the normal carries its f32 plane's tilt: their rounding reaches u₁, so one last step
-    /// is always taken on F summed in f64.
+    /// near the normal carries its f32 plane's tilt: their rounding reaches u₁, so the solve
+    /// goes on with Newton's steps on F summed in f64, bracketed afresh, until a step is below
+    /// √ε of the distance to the nearer tip.
     #[inline(always)]
     fn sample_decentral(&self, share: L, radius: L) -> V3<L> {
-        type W<L> = <L as Widen>::Wide;
         let target = share * self.p;
         // The sector: from the vertex with the greatest F ≤ target to the vertex with the
         // least F above it (the greatest azimuth if none is); of vertices with equal F, the
@@ -528,57 +533,59 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             let (_, ri) = radii(m_i, d);
             L::HALF * (ro - ri)
         };
-        let mut x = seed(t, span, width, s0, s1);
-        let (mut a, mut b) = (L::ZERO, width);
-        // A lane is done once its step is below √ε of the sector; it then stays where it is,
-        // so that the steps the other lanes of a packet still take repeat its values bit for
-        // bit, as its scalar call stops.
-        let small = L::EPSILON.sqrt() * width;
-        let mut done = width.le(L::ZERO) | span.le(L::ZERO);
-        for _ in 0..SOLVE_STEPS {
-            if done.all() {
-                break;
-            }
-            let d = self.at_angle(psi0 + x);
-            let r = sweep(d) - t;
-            let below = r.lt(L::ZERO);
-            a = L::select(below, x, a);
-            b = L::select(below, b, x);
-            let next = x - r / slope(d);
-            // Newton where it stays in the bracket, else bisection.
-            let next = L::select(next.gt(a) & next.lt(b), next, L::HALF * (a + b));
-            let exact = r.eq(L::ZERO);
-            let converged = (next - x).abs().le(small);
-            x = L::select(done | exact, x, next);
-            done = done | exact | converged;
-        }
-        // One last step on F in f64. The f32 sweeps are off by a few ε of the arcs' angles,
-        // and by more where an arc's plane passes near the normal (its f32 plane, rotated into
-        // the frame, tilts by ε over a small m̂_z): past the median ulp of u₁ in most sectors.
-        let d = self.at_angle(psi0 + x);
-        let h = widen3(self.frame.to_world(V3::new(d.x, d.y, L::ZERO)));
-        let q = cross3_in(self.wide_n, h);
-        let arc = |k: W<L>, later: L| {
-            let low = V3::select(
-                later.widen().gt(W::<L>::ZERO),
-                pick3(&self.wide, k, |e| e.b),
-                pick3(&self.wide, k, |e| e.a),
-            );
-            wide_part(
-                low,
-                pick3(&self.wide, k, |e| e.m),
-                pick(&self.wide, k, |e| e.mz),
-                h,
-                q,
-            )
-        };
-        let f = pick(table, k0, |s| s.full)
-            + arc(outer, pick(table, k0, |s| s.outer_later))
-            + arc(inner, pick(table, k0, |s| s.inner_later));
-        let residual = L::narrow(f - share.widen() * self.wide_p);
-        let g = slope(d);
-        let stepped = (x - residual / g).max(L::ZERO).min(width);
-        let x = L::select(g.gt(L::ZERO) & stepped.is_finite(), stepped, x);
+        // First on the two arcs' f32 sweeps, to √ε of the sector (the next step would be
+        // below ε of it).
+        let unsolved = width.le(L::ZERO) | span.le(L::ZERO);
+        let x = newton(
+            seed(t, span, width, s0, s1),
+            width,
+            unsolved,
+            SOLVE_STEPS,
+            |x| {
+                let d = self.at_angle(psi0 + x);
+                (sweep(d) - t, slope(d))
+            },
+            |_| L::EPSILON.sqrt() * width,
+            L::ZERO,
+        );
+        // Then on F summed in f64. The f32 sweeps are off by a few ε of the arcs' angles, and
+        // by more where an arc's plane passes near the normal (its f32 plane, rotated into the
+        // frame, tilts by ε over a small m̂_z), and they cancel: past the median ulp of u₁ in
+        // most sectors, and by far near a tip, where F is a difference of two sweeps each
+        // linear in the distance ψ from the tip while F grows as ψ². Where F bends as ψ², a
+        // Newton step of δ leaves δ²/2ψ, so the tolerance is √ε of the distance to the nearer
+        // tip (and of the sector elsewhere); as a rule one step meets it. At a tip itself F′ is 0
+        // and no step is defined: there the solve ends once F is within a quarter ε of u₁·P or
+        // within the f64 sum's own rounding, whose terms reach the spread times P.
+        let residual_tol = (L::EPSILON * L::c(0.25))
+            .max(L::c(4.0 * PROJECTED_MAX_SPREAD as f64 * f64::EPSILON))
+            * self.p;
+        let goal = share.widen() * self.wide_p;
+        let full = pick(table, k0, |s| s.full);
+        let (from_o, from_i) = (
+            pick(table, k0, |s| s.outer_from_a),
+            pick(table, k0, |s| s.inner_from_a),
+        );
+        let x = newton(
+            x,
+            width,
+            unsolved,
+            WIDE_STEPS,
+            |x| {
+                let d = self.at_angle(psi0 + x);
+                let h = widen3(self.frame.to_world(V3::new(d.x, d.y, L::ZERO)));
+                let q = cross3_in(self.wide_n, h);
+                let f = full
+                    + sweep_from(&self.wide, outer, from_o, h, q)
+                    + sweep_from(&self.wide, inner, from_i, h, q);
+                (L::narrow(f - goal), slope(d))
+            },
+            |x| {
+                let psi = psi0 + x;
+                L::EPSILON.sqrt() * width.min(psi).min(self.width - psi)
+            },
+            residual_tol,
+        );
         let d = self.at_angle(psi0 + x);
         let (zo, ro) = radii(m_o, d);
         let (zi, ri) = radii(m_i, d);
@@ -652,6 +659,24 @@ fn wide_part<T: Lane>(low: V3<T>, m: V3<T>, mz: T, h: V3<T>, q: V3<T>) -> T {
     T::HALF * mz * angle_in(dot3_in(c, c).sqrt(), dot3_in(low, x))
 }
 
+/// The f64 sweep up to world azimuth h (q = n × h) of the edge in slot k of `wide`, from its
+/// start a where `from_a` is 1, else from its end b: [`wide_part`] of a table's edge.
+#[inline(always)]
+fn sweep_from<L: Math, const K: usize>(
+    wide: &[WideEdge<L::Wide>; K],
+    k: L::Wide,
+    from_a: L,
+    h: V3<L::Wide>,
+    q: V3<L::Wide>,
+) -> L::Wide {
+    let low = V3::select(
+        from_a.widen().gt(<L::Wide as Lane>::ZERO),
+        pick3(wide, k, |e| e.a),
+        pick3(wide, k, |e| e.b),
+    );
+    wide_part(low, pick3(wide, k, |e| e.m), pick(wide, k, |e| e.mz), h, q)
+}
+
 /// One vertex of the decentral case, where a sector of the solve starts: see
 /// [`Projected::sample_decentral`].
 #[derive(Clone, Copy, Default)]
@@ -663,11 +688,11 @@ struct Start<L: Math> {
     /// The f64 sum of the sweeps of the edges wholly at or before it.
     full: L::Wide,
     /// The slots of the outer and inner edges that span the azimuths just after it, and 1
-    /// where that edge's end (not its start) is the earlier one, else 0.
+    /// where that edge's start a is its earlier end, else 0 (see [`sweep_from`]).
     outer: L::Wide,
     inner: L::Wide,
-    outer_later: L,
-    inner_later: L,
+    outer_from_a: L,
+    inner_from_a: L,
     /// F′ = ½(r_o² − r_i²) there, on the edges just after it and on those just before (0
     /// where there are none).
     after: L,
@@ -699,7 +724,7 @@ impl<L: Math> Start<L> {
         // as an edge of zeros.
         let none = L::c(1e9);
         let (mut after_o, mut after_i, mut before_o, mut before_i) = (none, none, none, none);
-        let (mut later_o, mut later_i, mut first_o, mut first_i) =
+        let (mut after_a_o, mut after_a_i, mut before_a_o, mut before_a_i) =
             (L::ZERO, L::ZERO, L::ZERO, L::ZERO);
         for (slot, x) in e.iter().enumerate().take(count) {
             let (ca, cb) = (cross2(x.da, d), cross2(x.db, d));
@@ -712,32 +737,25 @@ impl<L: Math> Start<L> {
             let ends = (a_lt & !b_lt) | (b_lt & !a_lt);
             let (o, i) = (x.m.z.gt(L::ZERO), x.m.z.lt(L::ZERO));
             let index = L::c(slot as f64);
-            let (later, first) = (
-                L::select(a_le, L::ZERO, L::ONE),
+            // Of an edge that spans d, the end at or before it; of one that ends there, the
+            // end strictly before.
+            let (after_a, before_a) = (
+                L::select(a_le, L::ONE, L::ZERO),
                 L::select(a_lt, L::ONE, L::ZERO),
             );
             after_o = L::select(spans & o, index, after_o);
             after_i = L::select(spans & i, index, after_i);
-            later_o = L::select(spans & o, later, later_o);
-            later_i = L::select(spans & i, later, later_i);
+            after_a_o = L::select(spans & o, after_a, after_a_o);
+            after_a_i = L::select(spans & i, after_a, after_a_i);
             before_o = L::select(ends & o, index, before_o);
             before_i = L::select(ends & i, index, before_i);
-            first_o = L::select(ends & o, first, first_o);
-            first_i = L::select(ends & i, first, first_i);
+            before_a_o = L::select(ends & o, before_a, before_a_o);
+            before_a_i = L::select(ends & i, before_a, before_a_i);
         }
         let h = widen3(frame.to_world(V3::new(d.x, d.y, L::ZERO)));
         let q = cross3_in(n, h);
-        // The sweep up to d of the edge in slot k, from its end before d (a where `first`).
-        let sweep = |k: L, first: L| {
-            let k = k.widen();
-            let low = V3::select(
-                first.widen().gt(zero),
-                pick3(wide, k, |w| w.a),
-                pick3(wide, k, |w| w.b),
-            );
-            wide_part(low, pick3(wide, k, |w| w.m), pick(wide, k, |w| w.mz), h, q)
-        };
-        let f = before + sweep(before_o, first_o) + sweep(before_i, first_i);
+        let sweep = |k: L, from_a: L| sweep_from(wide, k.widen(), from_a, h, q);
+        let f = before + sweep(before_o, before_a_o) + sweep(before_i, before_a_i);
         let slope = |o: L, i: L| {
             let (_, ro) = radii(pick3(e, o.widen(), |x| x.m), d);
             let (_, ri) = radii(pick3(e, i.widen(), |x| x.m), d);
@@ -748,8 +766,8 @@ impl<L: Math> Start<L> {
         let s = Self {
             outer: found(after_o),
             inner: found(after_i),
-            outer_later: later_o,
-            inner_later: later_i,
+            outer_from_a: after_a_o,
+            inner_from_a: after_a_i,
             ..Self::default()
         };
         Self {
@@ -787,6 +805,42 @@ fn pick3<S, T: Lanes, K: Lanes<Scalar = f64>>(table: &[S], k: K, f: impl Fn(&S) 
         pick(table, k, |s| f(s).y),
         pick(table, k, |s| f(s).z),
     )
+}
+
+/// The root in [0, w] of the increasing function whose residual and slope at x `at` gives,
+/// from x: Newton's steps where they stay inside the bracket the residuals' signs have
+/// narrowed, else bisection, at most `steps` of them. A lane is done once a Newton step is
+/// below `tol` at x, or the residual is within `residual_tol` of 0 (or it starts `done`); the
+/// step is kept where it lies inside the bracket, onto whose end it may round. A lane that is done stays where it is, so
+/// that the steps the other lanes of a packet still take repeat its values bit for bit, as its
+/// scalar call stops.
+#[inline(always)]
+fn newton<L: Math>(
+    mut x: L,
+    w: L,
+    mut done: L::Mask,
+    steps: usize,
+    at: impl Fn(L) -> (L, L),
+    tol: impl Fn(L) -> L,
+    residual_tol: L,
+) -> L {
+    let (mut a, mut b) = (L::ZERO, w);
+    for _ in 0..steps {
+        if done.all() {
+            break;
+        }
+        let (r, slope) = at(x);
+        let below = r.lt(L::ZERO);
+        a = L::select(below, x, a);
+        b = L::select(below, b, x);
+        let step = x - r / slope;
+        let converged = (step - x).abs().le(tol(x)) | r.abs().le(residual_tol);
+        let inside = step.gt(a) & step.lt(b);
+        let next = L::select(inside, step, L::select(converged, x, L::HALF * (a + b)));
+        x = L::select(done, x, next);
+        done = done | converged;
+    }
+    x
 }
 
 /// x ∈ [0, w] where the quadratic through (0, 0) and (w, F) with slope s₀ at 0 reaches t (with

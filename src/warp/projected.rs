@@ -812,9 +812,9 @@ fn pick3<S, T: Lanes, K: Lanes<Scalar = f64>>(table: &[S], k: K, f: impl Fn(&S) 
 /// from x: Newton's steps where they stay inside the bracket the residuals' signs have
 /// narrowed, else bisection, at most `steps` of them. A lane is done once a Newton step is
 /// below `tol` at x, or the residual is within `residual_tol` of 0 (or it starts `done`); the
-/// step is kept where it lies inside the bracket, onto whose end it may round. A lane that is done stays where it is, so
-/// that the steps the other lanes of a packet still take repeat its values bit for bit, as its
-/// scalar call stops.
+/// step is kept where it lies inside the bracket, onto whose end it may round. A lane that is
+/// done stays where it is, so that the steps the other lanes of a packet still take repeat its
+/// values bit for bit, as its scalar call stops.
 #[inline(always)]
 fn newton<L: Math>(
     mut x: L,

@@ -4,7 +4,9 @@
 //! dropped one has pdf 0, distance ∞ and Le 0; BSDF values are finite and ≥ 0 where the
 //! reflectances are; and the packet form's lanes equal the scalar form bit for bit. The same
 //! contract holds for every light prepared with a fuzzed normal in every light-sampling mode
-//! (the sphere's cap and the polygons' cosine-following maps).
+//! (the sphere's cap and the polygons' cosine-following maps), but that in the bilinear mode a
+//! sample's pdf (the warp's density at the u′ it drew) and the pdf function's (at the
+//! spherical inverse of the direction) agree to the inverse's round trip, not bit for bit.
 
 #![no_main]
 
@@ -94,8 +96,9 @@ fn check_light(l: &Light, p: Vec3, u: Vec2, w: Vec3, name: &str) {
 }
 
 /// The light prepared at p for normal n in `mode`: a kept sample with the pdf function's value
-/// and `hit`'s distance bit for bit, a dropped one with distance ∞ and Le 0, lane 0 of the
-/// packet equal to the scalar.
+/// (in the bilinear mode, within 1e-3 relative, as the `bilinear` target holds the warps) and
+/// `hit`'s distance bit for bit, a dropped one with distance ∞ and Le 0, lane 0 of the packet
+/// equal to the scalar.
 fn check_mode(l: &Light, p: Vec3, n: Vec3, u: Vec2, mode: LightSampling, name: &str) {
     let prepared = l.at_sampling(p, n, mode);
     let s = prepared.sample(u);
@@ -103,7 +106,13 @@ fn check_mode(l: &Light, p: Vec3, n: Vec3, u: Vec2, mode: LightSampling, name: &
     assert!(s.pdf.is_finite() && s.pdf >= 0.0, "{name}: pdf {s:?}");
     if s.pdf > 0.0 {
         assert!(s.wi.is_finite() && s.dist.is_finite() && s.dist >= 0.0, "{name}: {s:?}");
-        assert_eq!(prepared.pdf(s.wi).to_bits(), s.pdf.to_bits(), "{name}: pdf(wi) ≠ sample pdf");
+        let pdf = prepared.pdf(s.wi);
+        if mode == LightSampling::Bilinear {
+            let rel = ((f64::from(s.pdf) - f64::from(pdf)) / f64::from(pdf)).abs();
+            assert!(pdf > 0.0 && rel < 1e-3, "{name}: pdf(wi) {pdf} against sample pdf {}", s.pdf);
+        } else {
+            assert_eq!(pdf.to_bits(), s.pdf.to_bits(), "{name}: pdf(wi) ≠ sample pdf");
+        }
         assert_eq!(prepared.hit(s.wi).to_bits(), s.dist.to_bits(), "{name}: hit(wi) ≠ dist");
     } else {
         assert!(s.dist == f32::INFINITY && s.le == Vec3::ZERO && s.wi.is_finite(), "{name}: dropped {s:?}");

@@ -43,7 +43,9 @@ pub struct LightSample<V: Point3> {
     /// The radiance arriving along `wi`: the light's Le, or 0 from behind or for a dropped
     /// sample.
     pub le: V,
-    /// The pdf per steradian, the light's `pdf` at `wi` bit for bit; 0 means "drop the sample".
+    /// The pdf per steradian, the light's `pdf` at `wi` bit for bit (in
+    /// [`LightSampling::Bilinear`](super::LightSampling::Bilinear), to the spherical inverse's
+    /// round trip); 0 means "drop the sample".
     pub pdf: V::Lane,
 }
 

@@ -21,7 +21,9 @@
 //! - `pdf(p, wi)`: the solid-angle pdf of `sample`, in closed form with no ray cast. For every
 //!   kept sample (pdf > 0) it returns the same number, bit for bit, that `sample` returned: the
 //!   sampler computes its pdf by the same function at the very direction it returns (a dropped
-//!   sample, pdf 0, stands at +z, which may well be on the light);
+//!   sample, pdf 0, stands at +z, which may well be on the light). A polygon prepared for
+//!   [`LightSampling::Bilinear`] is the one exception: its sample returns the density it drew
+//!   with, which the pdf function matches to its inverse's round trip;
 //! - `hit(p, wi)`: the distance along `wi` to the light, ∞ for a miss. It decides "hit" by the
 //!   same test as `pdf`, so the two never disagree on whether a direction is on the light, and
 //!   a sample's distance is `hit` at its direction;

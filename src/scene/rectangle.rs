@@ -6,7 +6,8 @@ use glam::Vec3;
 use super::emitter::Emitter;
 use super::select::splat_vec;
 use super::shape::{
-    AreaPoint, LightSampling, PreparedShape, Shape, ShapeSample, on_shape, planar_point, warped,
+    AreaPoint, LightSampling, PreparedShape, Shape, ShapeSample, on_shape, planar_point,
+    through_bilinear, warped,
 };
 use crate::lane::V3;
 use crate::math::Math;
@@ -152,13 +153,19 @@ impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedRectangle<V> {
     #[inline]
     fn sample(&self, u: V::Vec2) -> ShapeSample<V> {
         let u = u.to_lanes();
+        // The spherical map's point may be far from unit length (a light 1e-22 away):
+        // normalise from a scale where its square cannot underflow.
         let (x, kept) = match &self.map {
-            RectangleMap::Spherical(r) => r.sample(u),
+            RectangleMap::Spherical(r) => {
+                let (x, drawn) = r.sample(u);
+                let wi = x.normalize_scaled();
+                let t = self.h / normal_dot(wi, self.ex, self.ey);
+                let on = on_shape(r.spherical().pdf(wi), t);
+                return through_bilinear(wi, drawn, r.weighted(), on);
+            }
             RectangleMap::Projected(r) => r.sample(u),
             RectangleMap::Area(r) => r.sample(u),
         };
-        // The spherical map's point may be far from unit length (a light 1e-22 away):
-        // normalise from a scale where its square cannot underflow.
         let wi = x.normalize_scaled();
         warped(wi, kept, self.eval(V::from_lanes(wi)))
     }

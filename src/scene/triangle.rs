@@ -7,7 +7,8 @@ use glam::Vec3;
 use super::emitter::Emitter;
 use super::select::splat_vec;
 use super::shape::{
-    AreaPoint, LightSampling, PreparedShape, Shape, ShapeSample, on_shape, planar_point, warped,
+    AreaPoint, LightSampling, PreparedShape, Shape, ShapeSample, on_shape, planar_point,
+    through_bilinear, warped,
 };
 use crate::lane::V3;
 use crate::math::Math;
@@ -32,7 +33,8 @@ use crate::warp::{
 ///
 /// Prepared for [`LightSampling::Bilinear`] with a shading normal, it samples through the
 /// bilinear cosine warp ([`BilinearTriangle`]), whose pdf is the spherical one times the
-/// bilinear density at the direction's spherical inverse. Prepared for
+/// bilinear density: at the u′ a sample drew, for the pdf returned with it, and at the
+/// direction's spherical inverse for `pdf`. Prepared for
 /// [`LightSampling::Projected`], it samples by projected solid angle ([`ProjectedTriangle`]):
 /// pdf n·ω / P above the receiver's horizon, 0 (and no
 /// distance) below it, unless it falls back to solid angle. Prepared for
@@ -168,7 +170,11 @@ impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedTriangle<V> {
     fn sample(&self, u: V::Vec2) -> ShapeSample<V> {
         let u = u.to_lanes();
         let (wi, kept) = match &self.map {
-            TriangleMap::Spherical(t) => t.sample(u),
+            TriangleMap::Spherical(t) => {
+                let (wi, drawn) = t.sample(u);
+                let on = on_shape(t.spherical().pdf(wi), self.plane_distance(wi));
+                return through_bilinear(wi, drawn, t.weighted(), on);
+            }
             TriangleMap::Projected(t) => t.sample(u),
             TriangleMap::Area(t) => t.sample(u),
         };

@@ -140,11 +140,20 @@ impl<L: Math> Warp<L> {
     /// [`linear`] for the marginal, then for the conditional.
     #[inline(always)]
     fn sample(&self, u: V2<L>) -> V2<L> {
+        self.sample_density(u).0
+    }
+
+    /// [`sample`](Self::sample) and the density there, which is [`pdf`](Self::pdf)'s at the
+    /// returned point bit for bit: the conditional's ends at x, drawn for y, serve it too.
+    #[inline(always)]
+    fn sample_density(&self, u: V2<L>) -> (V2<L>, L) {
         let [w00, w10, w01, w11] = self.w;
         let ux = clamp01(u.x);
         let root = ux.mul_add(self.d2, self.a2).sqrt();
         let x = L::ONE.min(ux * (self.ab / (self.a + root)));
-        V2::new(x, linear(u.y, lerp(x, w00, w10), lerp(x, w01, w11)))
+        let (c0, c1) = (lerp(x, w00, w10), lerp(x, w01, w11));
+        let y = linear(u.y, c0, c1);
+        (V2::new(x, y), self.density(lerp(y, c0, c1)))
     }
 
     /// 4·bilerp(x, y)/Σw in the square, else 0 (also for NaN): the conditional's ends at x,
@@ -154,7 +163,13 @@ impl<L: Math> Warp<L> {
         let [w00, w10, w01, w11] = self.w;
         let inside = p.x.ge(L::ZERO) & p.x.le(L::ONE) & p.y.ge(L::ZERO) & p.y.le(L::ONE);
         let density = lerp(p.y, lerp(p.x, w00, w10), lerp(p.x, w01, w11));
-        L::select(inside, L::c(4.0) * density / self.sum, L::ZERO)
+        L::select(inside, self.density(density), L::ZERO)
+    }
+
+    /// 4·bilerp/Σw, with Σw = 4w exactly for equal weights w, so that their density is exactly 1.
+    #[inline(always)]
+    fn density(&self, bilerp: L) -> L {
+        L::c(4.0) * bilerp / self.sum
     }
 
     /// Each coordinate through [`linear_inverse`], x first.
@@ -224,18 +239,17 @@ fn sample_through<L: Math>(
     w: &Warp<L>,
     base: impl FnOnce(V2<L>) -> (V3<L>, L),
 ) -> (V3<L>, L) {
-    let v = w.sample(clamp_u(u));
+    let (v, d) = w.sample_density(clamp_u(u));
     let (x, p) = base(v);
-    (x, compose(p, v, w))
+    (x, compose(p, d))
 }
 
-/// The base pdf `p` times the bilinear density at `v`, or 0 where `p` is 0 (`v` may be NaN
+/// The base pdf `p` times the bilinear density `d`, or 0 where `p` is 0 (`d` may be NaN
 /// there). Where `p` is positive the result is too: the density is at least 4·min w/Σw in the
-/// square, and where the inverse failed (NaN `v`) it counts as 1, so that the pdf is positive
-/// exactly where the spherical one is.
+/// square, and where the inverse failed (a NaN u′, so NaN `d`) it counts as 1, so that the pdf
+/// is positive exactly where the spherical one is.
 #[inline(always)]
-fn compose<L: Math>(p: L, v: V2<L>, w: &Warp<L>) -> L {
-    let d = w.pdf(v);
+fn compose<L: Math>(p: L, d: L) -> L {
     L::select(
         p.gt(L::ZERO),
         p * L::select(d.gt(L::ZERO), d, L::ONE),
@@ -301,6 +315,15 @@ impl<P: Point3<Lane = L>, L: Math> BilinearTriangle<P> {
         self.w.w
     }
 
+    /// True in the lanes whose weights differ: there the warp is not the identity, and the pdf
+    /// [`sample`](Self::sample) returns (the density at the u′ it drew) and [`pdf`](Self::pdf)'s
+    /// (at the spherical inverse of the direction) agree to the inverse's round trip, not bit
+    /// for bit.
+    #[inline]
+    pub fn weighted(&self) -> <L as Lane>::Mask {
+        !self.plain
+    }
+
     /// See [`bilinear_triangle`].
     #[inline]
     pub fn sample(&self, u: P::Vec2) -> (P, L) {
@@ -320,7 +343,8 @@ impl<P: Point3<Lane = L>, L: Math> BilinearTriangle<P> {
         if self.plain.all() {
             return self.base.pdf(w);
         }
-        compose(self.base.pdf(w), self.base.inverse(w).to_lanes(), &self.w)
+        let v = self.base.inverse(w).to_lanes();
+        compose(self.base.pdf(w), self.w.pdf(v))
     }
 
     /// See [`bilinear_triangle_inverse`].
@@ -419,6 +443,15 @@ impl<P: Point3<Lane = L>, L: Math> BilinearRectangle<P> {
         self.w.w
     }
 
+    /// True in the lanes whose weights differ: there the warp is not the identity, and the pdf
+    /// [`sample`](Self::sample) returns (the density at the u′ it drew) and [`pdf`](Self::pdf)'s
+    /// (at the spherical inverse of the direction) agree to the inverse's round trip, not bit
+    /// for bit.
+    #[inline]
+    pub fn weighted(&self) -> <L as Lane>::Mask {
+        !self.plain
+    }
+
     /// See [`bilinear_rectangle`].
     #[inline]
     pub fn sample(&self, u: P::Vec2) -> (P, L) {
@@ -440,11 +473,8 @@ impl<P: Point3<Lane = L>, L: Math> BilinearRectangle<P> {
         }
         // The inverse reads a point of the light; the pdf accepts any positive multiple.
         let on_plane = P::from_lanes(self.base.on_plane(p.to_lanes()));
-        compose(
-            self.base.pdf(p),
-            self.base.inverse(on_plane).to_lanes(),
-            &self.w,
-        )
+        let v = self.base.inverse(on_plane).to_lanes();
+        compose(self.base.pdf(p), self.w.pdf(v))
     }
 
     /// See [`bilinear_rectangle_inverse`].

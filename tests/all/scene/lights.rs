@@ -1087,11 +1087,15 @@ fn phong_chi_square() {
 }
 
 /// In the bilinear, projected and area modes, a triangle or rectangle light keeps the contract
-/// of every light: the sample's pdf is the pdf function's and its distance the hit distance, bit
-/// for bit; and the hit distance, which skips the bilinear inverse, is the one `pdf_hit` gives,
-/// so "on the light" is still one verdict (directions grazing the silhouette included). The
-/// bilinear and area modes keep the spherical support; the projected one has none below the
-/// horizon (unless it falls back to solid angle).
+/// of every light: the sample's distance is the hit distance, bit for bit, and so is its pdf the
+/// pdf function's, but in the bilinear mode: there the sample returns the warp's density at the
+/// u′ it drew and the pdf function takes u′ from the spherical inverse, so the two agree to the
+/// inverse's round trip times the density's relative slope, which the 0.01 floor lets reach 100
+/// (asserted within 2e-4; measured 8.5e-5 on the triangle straddling the horizon under the
+/// normal −x, below 2e-5 in the other cases), and bit for bit where the light's weights are equal. The hit distance, which skips the bilinear inverse, is
+/// the one `pdf_hit` gives, so "on the light" is still one verdict (directions grazing the
+/// silhouette included). The bilinear and area modes keep the spherical support; the projected
+/// one has none below the horizon (unless it falls back to solid angle).
 #[test]
 fn every_light_sampling_mode_keeps_the_light_contract() {
     let mut rng = TestRng::new(31);
@@ -1101,6 +1105,9 @@ fn every_light_sampling_mode_keeps_the_light_contract() {
         LightSampling::Area,
     ] {
         let mut checked = 0;
+        // The bilinear mode's worst relative pdf difference, and how many of its samples
+        // went through unequal weights (so that the bound was tested).
+        let (mut worst, mut weighted) = (0.0f64, 0);
         for c in cases() {
             if !matches!(
                 c.light.shape,
@@ -1114,7 +1121,15 @@ fn every_light_sampling_mode_keeps_the_light_contract() {
                 for _ in 0..2000 {
                     let s = l.sample(rng.u2());
                     if s.pdf > 0.0 {
-                        assert_eq!(s.pdf.to_bits(), l.pdf(s.wi).to_bits(), "{}: pdf", c.name);
+                        let pdf = l.pdf(s.wi);
+                        let same = s.pdf.to_bits() == pdf.to_bits();
+                        if mode == LightSampling::Bilinear && !same {
+                            let rel = (f64::from(s.pdf) / f64::from(pdf) - 1.0).abs();
+                            worst = worst.max(rel);
+                            weighted += 1;
+                        } else {
+                            assert!(same, "{}: pdf {} against {pdf}", c.name, s.pdf);
+                        }
                         assert_eq!(s.dist.to_bits(), l.hit(s.wi).to_bits(), "{}: dist", c.name);
                     }
                     // Any direction, and one just off a sample (across the silhouette,
@@ -1155,6 +1170,17 @@ fn every_light_sampling_mode_keeps_the_light_contract() {
             }
         }
         assert!(checked > 10_000, "{checked} directions");
+        if mode == LightSampling::Bilinear {
+            eprintln!("bilinear: sample pdf against pdf(wi), worst {worst:.2e} over {weighted}");
+            assert!(
+                weighted > 5_000,
+                "{weighted} samples through unequal weights"
+            );
+            assert!(
+                worst < 2e-4,
+                "bilinear: sample pdf against pdf(wi): {worst:.2e}"
+            );
+        }
     }
 }
 

@@ -303,6 +303,13 @@ fn measure(
     }
 }
 
+/// What a timed loop keeps of a light sample: its direction scaled by its pdf, so that the pdf's
+/// computation cannot be left out of the time.
+#[inline(always)]
+fn sampled(s: mcsample::scene::LightSample<Vec3>) -> Vec3 {
+    s.wi * s.pdf
+}
+
 /// Every light of the registry prepared at the origin for a receiver with normal
 /// [`TILTED`](mcsample::registry::TILTED), in every light-sampling mode its shape offers.
 fn prepared(cfg: &Config, samplers: &[Sampler], pts: &[Vec2]) -> Vec<PreparedRow> {
@@ -321,12 +328,12 @@ fn prepared(cfg: &Config, samplers: &[Sampler], pts: &[Vec2]) -> Vec<PreparedRow
                 pts,
                 &|us: &[Vec2], out: &mut [Vec3]| {
                     for (o, &u) in out.iter_mut().zip(us) {
-                        *o = light.at_sampling(black_box(p), n, mode).sample(u).wi;
+                        *o = sampled(light.at_sampling(black_box(p), n, mode).sample(u));
                     }
                 },
                 &|us: &[Vec2], out: &mut [Vec3]| {
                     for (o, &u) in out.iter_mut().zip(us) {
-                        *o = prepared.sample(u).wi;
+                        *o = sampled(prepared.sample(u));
                     }
                 },
             );

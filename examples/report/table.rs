@@ -166,7 +166,8 @@ pub fn warps(cfg: &Config, rows: &[Row]) -> Table {
 pub fn prepared(rows: &[PreparedRow]) -> Table {
     let note = "Scalar ns of a light's first sample at a new shading point (set-up included) and \
                 of each further sample of the light prepared there (`light.at_sampling(p, n, \
-                mode)`, n the registry's tilted normal), timed as one interleaved pair; further / \
+                mode)`, n the registry's tilted normal; the loop keeps direction × pdf, so the pdf is \
+                timed too), timed as one interleaved pair; further / \
                 solid angle: a further sample's time over the same light's by solid angle (a \
                 run of its own). The triangle and the rectangle in every light-sampling mode, \
                 the sphere by solid angle (its cone) and projected solid angle (its cap), the \

@@ -23,7 +23,7 @@ use std::time::Instant;
 
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use mcsample::lane::{V2, V3};
-use mcsample::scene::{LightSampling, Shape};
+use mcsample::scene::{AnyShape, Light, LightSampling, Shape, Sphere};
 use mcsample::verify::registry::{self, Sampler};
 use mcsample::warp::{
     self, SolidAngleRectangle, SolidAngleTriangle, SphericalRectangle, SphericalTriangle,
@@ -310,44 +310,82 @@ fn sampled(s: mcsample::scene::LightSample<Vec3>) -> Vec3 {
     s.wi * s.pdf
 }
 
+/// The receiver's normals a light is prepared for: the registry's tilted normal, and for a
+/// sphere seen from outside two more, named, that put its cap across the horizon (the centre on
+/// it) and mostly below (the centre half the cap's angular radius σ below it), the cases whose
+/// projected sample solves the lune.
+fn receivers(shape: &AnyShape) -> Vec<(&'static str, Vec3)> {
+    let mut normals = vec![("", mcsample::registry::TILTED)];
+    if let AnyShape::Sphere(Sphere { center, radius }) = *shape {
+        let c = center.as_dvec3();
+        let sin = f64::from(radius) / c.length();
+        if sin < 1.0 {
+            let (axis, across) = (c.normalize(), c.any_orthonormal_vector());
+            let tilt = |beta: f64| (axis * beta.cos() + across * beta.sin()).as_vec3();
+            let half_pi = std::f64::consts::FRAC_PI_2;
+            normals.push((" across", tilt(half_pi)));
+            normals.push((" below", tilt(half_pi + 0.5 * sin.asin())));
+        }
+    }
+    normals
+}
+
 /// Every light of the registry prepared at the origin for a receiver with normal
-/// [`TILTED`](mcsample::registry::TILTED), in every light-sampling mode its shape offers.
+/// [`TILTED`](mcsample::registry::TILTED) (and the spheres for the normals of [`receivers`]), in
+/// every light-sampling mode its shape offers.
 fn prepared(cfg: &Config, samplers: &[Sampler], pts: &[Vec2]) -> Vec<PreparedRow> {
-    let (p, n) = (Vec3::ZERO, mcsample::registry::TILTED);
+    let p = Vec3::ZERO;
     let mut rows = Vec::new();
     for s in samplers {
         let Some(light) = s.scene_light() else {
             continue;
         };
-        let mut plain = f64::NAN;
-        for &mode in light.shape.modes() {
-            let prepared = light.at_sampling(p, n, mode);
-            let (first, further) = time_pair(
-                cfg,
-                pts,
-                pts,
-                &|us: &[Vec2], out: &mut [Vec3]| {
-                    for (o, &u) in out.iter_mut().zip(us) {
-                        *o = sampled(light.at_sampling(black_box(p), n, mode).sample(u));
-                    }
-                },
-                &|us: &[Vec2], out: &mut [Vec3]| {
-                    for (o, &u) in out.iter_mut().zip(us) {
-                        *o = sampled(prepared.sample(u));
-                    }
-                },
-            );
-            if mode == LightSampling::SolidAngle {
-                plain = further;
-            }
-            rows.push(PreparedRow {
-                name: s.name(),
-                mode: mode.name(),
-                first_ns: first,
-                further_ns: further,
-                further_vs_solid_angle: further / plain,
-            });
+        for (suffix, n) in receivers(&light.shape) {
+            rows.extend(prepared_at(cfg, s, &light, p, n, suffix, pts));
         }
+    }
+    rows
+}
+
+/// One light's rows for the receiver at p with normal n, in every mode its shape offers.
+fn prepared_at(
+    cfg: &Config,
+    s: &Sampler,
+    light: &Light,
+    p: Vec3,
+    n: Vec3,
+    suffix: &str,
+    pts: &[Vec2],
+) -> Vec<PreparedRow> {
+    let mut plain = f64::NAN;
+    let mut rows = Vec::new();
+    for &mode in light.shape.modes() {
+        let prepared = light.at_sampling(p, n, mode);
+        let (first, further) = time_pair(
+            cfg,
+            pts,
+            pts,
+            &|us: &[Vec2], out: &mut [Vec3]| {
+                for (o, &u) in out.iter_mut().zip(us) {
+                    *o = sampled(light.at_sampling(black_box(p), n, mode).sample(u));
+                }
+            },
+            &|us: &[Vec2], out: &mut [Vec3]| {
+                for (o, &u) in out.iter_mut().zip(us) {
+                    *o = sampled(prepared.sample(u));
+                }
+            },
+        );
+        if mode == LightSampling::SolidAngle {
+            plain = further;
+        }
+        rows.push(PreparedRow {
+            name: format!("{}{suffix}", s.name()),
+            mode: mode.name(),
+            first_ns: first,
+            further_ns: further,
+            further_vs_solid_angle: further / plain,
+        });
     }
     rows
 }

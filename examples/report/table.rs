@@ -166,12 +166,16 @@ pub fn warps(cfg: &Config, rows: &[Row]) -> Table {
 pub fn prepared(rows: &[PreparedRow]) -> Table {
     let note = "Scalar ns of a light's first sample at a new shading point (set-up included) and \
                 of each further sample of the light prepared there (`light.at_sampling(p, n, \
-                mode)`, n the registry's tilted normal; the loop keeps direction × pdf, so the pdf is \
-                timed too), timed as one interleaved pair; further / \
-                solid angle: a further sample's time over the same light's by solid angle (a \
-                run of its own). The triangle and the rectangle in every light-sampling mode, \
-                the sphere by solid angle (its cone) and projected solid angle (its cap), the \
-                disk by solid angle (its spherical ellipse) and by area."
+                mode)`, n the registry's tilted normal; the loop keeps direction × pdf, so the \
+                pdf is timed too), timed as one interleaved pair; further / solid angle: a \
+                further sample's time over the same light's by solid angle, timed as an \
+                interleaved pair of its own. The triangle and the rectangle in every \
+                light-sampling mode, the sphere by solid angle (its cone) and projected solid \
+                angle (its cap), the disk by solid angle (its spherical ellipse) and by area. \
+                The spheres seen from outside also for two more normals: `across` puts the \
+                centre on the receiver's horizon, `below` half the cap's angular radius under \
+                it; their projected samples solve the lune between the cap's ellipse and the \
+                horizon by Newton's method."
         .to_string();
     let head = [
         "light",

@@ -23,7 +23,7 @@ use std::time::Instant;
 
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use mcsample::lane::{V2, V3};
-use mcsample::scene::{AnyShape, Light, LightSampling, Shape, Sphere};
+use mcsample::scene::{AnyShape, Light, LightSampling, PreparedLight, Shape, Sphere};
 use mcsample::verify::registry::{self, Sampler};
 use mcsample::warp::{
     self, SolidAngleRectangle, SolidAngleTriangle, SphericalRectangle, SphericalTriangle,
@@ -331,6 +331,15 @@ fn receivers(shape: &AnyShape) -> Vec<(&'static str, Vec3)> {
     normals
 }
 
+/// The timed loop of a prepared light's further samples.
+fn further_samples(light: &PreparedLight) -> impl Fn(&[Vec2], &mut [Vec3]) + '_ {
+    move |us, out| {
+        for (o, &u) in out.iter_mut().zip(us) {
+            *o = sampled(light.sample(u));
+        }
+    }
+}
+
 /// Every light of the registry prepared at the origin for a receiver with normal
 /// [`TILTED`](mcsample::registry::TILTED) (and the spheres for the normals of [`receivers`]), in
 /// every light-sampling mode its shape offers.
@@ -371,11 +380,7 @@ fn prepared_at(
                     *o = sampled(light.at_sampling(black_box(p), n, mode).sample(u));
                 }
             },
-            &|us: &[Vec2], out: &mut [Vec3]| {
-                for (o, &u) in out.iter_mut().zip(us) {
-                    *o = sampled(prepared.sample(u));
-                }
-            },
+            &further_samples(&prepared),
         );
         // Against solid angle in a pair of its own: one mode's time over another's from separate
         // runs moved by ±20 % on this shared machine where code identical in both did not.
@@ -386,16 +391,8 @@ fn prepared_at(
                 cfg,
                 pts,
                 pts,
-                &|us: &[Vec2], out: &mut [Vec3]| {
-                    for (o, &u) in out.iter_mut().zip(us) {
-                        *o = sampled(plain.sample(u));
-                    }
-                },
-                &|us: &[Vec2], out: &mut [Vec3]| {
-                    for (o, &u) in out.iter_mut().zip(us) {
-                        *o = sampled(prepared.sample(u));
-                    }
-                },
+                &further_samples(&plain),
+                &further_samples(&prepared),
             );
             b / a
         };

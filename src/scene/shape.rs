@@ -27,8 +27,8 @@ pub enum LightSampling {
     /// the warp's density at the u′ it drew (the density it was drawn with), while the pdf of a
     /// direction takes u′ from the spherical map's inverse, which costs about a second sample.
     /// The two agree to the inverse's round trip times the density's relative slope (within
-    /// 2e-4 relative, the 0.01 weight floor allowing slopes up to 100; 1e-5 and below for
-    /// lights above the horizon), and bit for bit where a light's weights are equal. A MIS
+    /// 2e-4 relative, the 0.01 weight floor allowing slopes up to 100; measured 8.5e-5 at
+    /// worst on the crate's test lights, below 2e-5 on all but one), and bit for bit where a light's weights are equal. A MIS
     /// weight sees that difference, and nothing else does: "on the light" is still one verdict.
     Bilinear,
     /// The triangle and the parallelogram by projected solid angle

@@ -7,7 +7,9 @@ use glam::Vec3;
 
 use super::emitter::Emitter;
 use super::select::{splat_lane, splat_vec};
-use super::shape::{AreaPoint, LightSampling, PreparedShape, Shape, ShapeSample, on_shape};
+use super::shape::{
+    AreaPoint, AtPoint, LightSampling, PreparedShape, Shape, ShapeSample, on_shape,
+};
 use crate::frame::Frame;
 use crate::lane::{Lane, Mask, V2, V3};
 use crate::math::Math;
@@ -95,33 +97,15 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Disk<V> {
 
     #[inline(always)]
     fn at(&self, p: V, _n: V, sampling: LightSampling) -> PreparedDisk<V> {
-        let d = self.center.to_lanes() - p.to_lanes();
-        let n = self.normal.to_lanes().normalize();
-        let r = self.radius;
-        let h = d.dot(n);
-        let area_pdf = L::c(1.0 / PI) / (r * r);
-        let valid = r.gt(L::ZERO)
-            & area_pdf.is_finite()
-            & h.abs().gt(L::c(1e-6) * d.length())
-            & h.is_finite();
-        let ellipse = match sampling {
-            LightSampling::Area => None,
-            _ => Some(SphericalEllipse::new(d, n, r)),
-        };
-        let by_ellipse = match &ellipse {
-            Some(e) => valid & !e.by_area(),
-            None => L::ZERO.gt(L::ZERO),
-        };
-        PreparedDisk {
-            d,
-            frame: Frame::from_normal(n),
-            r,
-            h,
-            area_pdf,
-            valid,
-            ellipse,
-            by_ellipse,
-        }
+        self.prepare(p, sampling, true)
+    }
+
+    /// A pdf or a distance at one point needs the ellipse's Ω and the hit test, not its
+    /// sampling table.
+    #[inline(always)]
+    fn with_at<W: AtPoint<V>>(&self, p: V, _n: V, sampling: LightSampling, work: W) -> W::Output {
+        let samples = work.samples();
+        work.run(&self.prepare(p, sampling, samples))
     }
 
     /// A point uniform on the disk (the concentric map), its normal and the area pdf 1/(πr²).
@@ -147,6 +131,42 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Disk<V> {
     #[inline]
     fn modes(&self) -> &'static [LightSampling] {
         &[LightSampling::SolidAngle, LightSampling::Area]
+    }
+}
+
+impl<V: Point3<Lane = L>, L: Math> Disk<V> {
+    /// The disk prepared at `p`; with `table` false, its ellipse without the sampling table
+    /// (for a pdf or a distance alone, [`SphericalEllipse::for_pdf`]).
+    #[inline(always)]
+    fn prepare(&self, p: V, sampling: LightSampling, table: bool) -> PreparedDisk<V> {
+        let d = self.center.to_lanes() - p.to_lanes();
+        let n = self.normal.to_lanes().normalize();
+        let r = self.radius;
+        let h = d.dot(n);
+        let area_pdf = L::c(1.0 / PI) / (r * r);
+        let valid = r.gt(L::ZERO)
+            & area_pdf.is_finite()
+            & h.abs().gt(L::c(1e-6) * d.length())
+            & h.is_finite();
+        let ellipse = match sampling {
+            LightSampling::Area => None,
+            _ if table => Some(SphericalEllipse::new(d, n, r)),
+            _ => Some(SphericalEllipse::for_pdf(d, n, r)),
+        };
+        let by_ellipse = match &ellipse {
+            Some(e) => valid & !e.by_area(),
+            None => L::ZERO.gt(L::ZERO),
+        };
+        PreparedDisk {
+            d,
+            frame: Frame::from_normal(n),
+            r,
+            h,
+            area_pdf,
+            valid,
+            ellipse,
+            by_ellipse,
+        }
     }
 }
 

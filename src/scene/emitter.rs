@@ -227,6 +227,10 @@ struct Once<V: Point3> {
 impl<V: Point3<Lane = L>, L: Math> AtPoint<V> for Once<V> {
     type Output = LightSample<V>;
     #[inline(always)]
+    fn samples(&self) -> bool {
+        matches!(self.query, Query::Sample(_))
+    }
+    #[inline(always)]
     fn run<P: PreparedShape<V>>(self, shape: &P) -> LightSample<V> {
         let zero = V::from_lanes(V3::all(L::ZERO));
         let none = LightSample {

@@ -131,6 +131,12 @@ pub trait AtPoint<V: Point3> {
     type Output;
     /// The work, on `shape`.
     fn run<P: PreparedShape<V>>(self, shape: &P) -> Self::Output;
+    /// Whether the work draws a sample. Work that only asks a pdf or a distance lets a shape
+    /// leave out the part of its preparation that only its sampler reads (the disk's table).
+    #[inline(always)]
+    fn samples(&self) -> bool {
+        true
+    }
 }
 
 /// A shape prepared at a shading point.

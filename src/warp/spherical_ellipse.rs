@@ -414,8 +414,10 @@ struct Ellipse<L: Math> {
 }
 
 impl<L: Math> Ellipse<L> {
+    /// The set-up; with `table` false, without the sampling table ([`Shape::tabulate`]), which
+    /// only the sample and the inverse read: Ω, the frame and the hit test are the same.
     #[inline(always)]
-    fn new(center: V3<L>, normal: V3<L>, radius: L) -> Self {
+    fn new(center: V3<L>, normal: V3<L>, radius: L, table: bool) -> Self {
         let zero = W::<L>::ZERO;
         let (c, nw) = (widen3::<L>(center), widen3::<L>(normal));
         let n = unit_wide(nw);
@@ -455,7 +457,9 @@ impl<L: Math> Ellipse<L> {
         };
         let one = W::<L>::ONE;
         let quarter = shape.area(W::<L>::c(FRAC_PI_2), one, zero);
-        shape.tabulate();
+        if table {
+            shape.tabulate();
+        }
         // A small ellipse by the series of ∫∫ dA/√(1 − ρ²) over its orthographic image:
         // πab(1 + (a² + b²)/8 + 3(3a⁴ + 2a²b² + 3b⁴)/64 + O(a⁶)), within 1e-15 relative for
         // a² < 1e-5, where F(π/2)'s absolute error (some 5e-15) would be 1e-10 of Ω or more.
@@ -629,7 +633,26 @@ impl<P: Point3<Lane = L>, L: Math> SphericalEllipse<P> {
     /// `normal` (any non-zero multiple; either side).
     #[inline]
     pub fn new(center: P, normal: P, radius: L) -> Self {
-        Self(Ellipse::new(center.to_lanes(), normal.to_lanes(), radius))
+        Self(Ellipse::new(
+            center.to_lanes(),
+            normal.to_lanes(),
+            radius,
+            true,
+        ))
+    }
+
+    /// [`new`](Self::new) for [`pdf`](Self::pdf), [`solid_angle`](Self::solid_angle) and
+    /// [`by_area`](Self::by_area) alone, which give the same values: the sampling table (its
+    /// nine knots, each an f64 evaluation of the area integral) is left out, so `sample`,
+    /// `inverse` and `density_error` are not to be called on it.
+    #[inline]
+    pub(crate) fn for_pdf(center: P, normal: P, radius: L) -> Self {
+        Self(Ellipse::new(
+            center.to_lanes(),
+            normal.to_lanes(),
+            radius,
+            false,
+        ))
     }
 
     /// Ω, the solid angle the disk subtends, in f64 and rounded (0 where there is nothing to
@@ -779,7 +802,7 @@ pub fn spherical_ellipse_pdf<P: Point3<Lane = L>, L: Math>(
     normal: P,
     radius: L,
 ) -> L {
-    SphericalEllipse::new(center, normal, radius).pdf(w)
+    SphericalEllipse::for_pdf(center, normal, radius).pdf(w)
 }
 
 /// Inverse of [`spherical_ellipse`]: the u that maps to direction `w` (any positive multiple),

@@ -1,6 +1,6 @@
 //! Small pieces that several warps share: the input contract and the angle of a direction.
 
-use crate::lane::{V2, V3};
+use crate::lane::{Lanes, V2, V3};
 use crate::math::Math;
 
 /// 1 − 2⁻²⁴, the largest f32 below 1.
@@ -16,6 +16,22 @@ pub(crate) fn clamp_u<L: Math>(u: V2<L>) -> V2<L> {
 #[inline(always)]
 pub(crate) fn clamp01<L: Math>(x: L) -> L {
     x.clamp(L::ZERO, L::ONE)
+}
+
+/// Field `f` of entry k of `table` in each lane (k a whole number in each): a load in the
+/// scalar form and a lane-by-lane fetch in the packets, rather than a select through every
+/// entry. An index past the table gives 0.
+#[inline(always)]
+pub(crate) fn pick<S, T: Lanes, K: Lanes<Scalar = f64>>(
+    table: &[S],
+    k: K,
+    f: impl Fn(&S) -> T,
+) -> T {
+    T::from_fn(|i| {
+        table
+            .get(k.lane(i) as usize)
+            .map_or(T::Scalar::default(), |s| f(s).lane(i))
+    })
 }
 
 /// The azimuth of (x, y) as a fraction of a turn, in [0, 1).

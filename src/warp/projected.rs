@@ -36,7 +36,7 @@ use crate::frame::Frame;
 use crate::lane::{Lane, Lanes, Mask, V2, V3, Widen, zip_map};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
-use crate::warp::common::clamp_u;
+use crate::warp::common::{clamp_u, pick};
 use crate::warp::family::{is_unit, lanes3};
 use crate::warp::polygon::{EdgePlanes, cross3_in, dot3_in, narrow3, unit_wide, widen3};
 use crate::warp::{Family, SphericalRectangle, SphericalTriangle};
@@ -780,18 +780,6 @@ impl<L: Math> Start<L> {
             ..s
         }
     }
-}
-
-/// Field `f` of entry k of `table` in each lane (k a whole number in each): a load in the
-/// scalar form and a lane-by-lane fetch in the packets, rather than a select through every
-/// entry.
-#[inline(always)]
-fn pick<S, T: Lanes, K: Lanes<Scalar = f64>>(table: &[S], k: K, f: impl Fn(&S) -> T) -> T {
-    T::from_fn(|i| {
-        table
-            .get(k.lane(i) as usize)
-            .map_or(T::Scalar::default(), |s| f(s).lane(i))
-    })
 }
 
 #[inline(always)]

@@ -72,10 +72,10 @@ struct LuneKnot<L> {
 }
 
 /// θ − sin θ for θ ∈ [0, π/2] by its Taylor series θ³/3! − θ⁵/5! + … − θ²¹/21!, whose
-/// truncation is below 3e-18 relative there: no cancellation near 0, and no branch between a
-/// series and θ − sin θ, which LLVM compiled as a jump on θ < 1 that mispredicted and stalled
-/// the lune's solve behind its arcsines. Plain products, so that the f64 lanes agree with the
-/// scalar f64.
+/// truncation is below 3e-18 relative there: no cancellation near 0, and no choice between a
+/// series and θ − sin θ. Such a select, once LLVM pairs the two arcsine terms in one register,
+/// becomes a jump on θ < 1 that varies from sample to sample and resolves only after the
+/// arcsines. Plain products, so that the f64 lanes agree with the scalar f64.
 #[inline(always)]
 fn theta_minus_sin<T: Lane>(theta: T) -> T {
     let t2 = theta * theta;

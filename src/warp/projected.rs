@@ -57,9 +57,15 @@ pub const PROJECTED_MIN_SR: f32 = 1e-4;
 /// so the cosine varies little over it.
 pub const PROJECTED_MAX_SPREAD: f32 = 1024.0;
 
-/// The most Newton (or bisection) steps of the decentral case's azimuth solve; it stops
-/// after a step below √ε of the sector, as a rule after one or two.
+/// The most Newton (or bisection) steps of the decentral case's azimuth solve on the f32
+/// sweeps; it stops after a step below [`SOLVE_TOLERANCE`] of the sector, as a rule after one.
 const SOLVE_STEPS: usize = 12;
+
+/// The f32 steps stop after a step below this fraction of the sector (or of the distance to
+/// the nearer tip of the region, where that is less). Newton's error is then about its square,
+/// below the √ε (3.5e-4) at which one step on F in f64 finishes the solve: further f32 steps
+/// would only repeat what that step does anyway.
+const SOLVE_TOLERANCE: f64 = 1e-2;
 
 /// The most Newton (or bisection) steps of the decentral solve on F summed in f64, which
 /// starts where the f32 steps end.
@@ -481,10 +487,10 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
     ///
     /// The sector (two vertices adjacent in azimuth) comes from the table of F at the vertices;
     /// within it one outer and one inner arc bound the region, so that F is F at the sector's
-    /// start plus their two sweeps, ½·m̂_z·(angle along the arc). The seed is the quadratic with
-    /// the sector's end values and one end's slope (exact for a corner of straight sides);
-    /// Newton's steps on the f32 sweeps follow, bracketed, until a step is below √ε of the
-    /// sector (the next would be below ε). The two sweeps cancel, and an arc whose plane passes
+    /// start plus their two sweeps, ½·m̂_z·(angle along the arc). The seed is the root of the
+    /// cubic with the sector's end values and end slopes ([`seed`]); Newton's steps on the f32
+    /// sweeps follow, bracketed, until a step is below [`SOLVE_TOLERANCE`] of the sector or of
+    /// the distance to the nearer tip. The two sweeps cancel, and an arc whose plane passes
     /// near the normal carries its f32 plane's tilt: their rounding reaches u₁, so the solve
     /// goes on with Newton's steps on F summed in f64, bracketed afresh, until a step is below
     /// √ε of the distance to the nearer tip.
@@ -534,8 +540,7 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             let (_, ri) = radii(m_i, d);
             L::HALF * (ro - ri)
         };
-        // First on the two arcs' f32 sweeps, to √ε of the sector (the next step would be
-        // below ε of it).
+        // First on the two arcs' f32 sweeps, to about the square of SOLVE_TOLERANCE.
         let unsolved = width.le(L::ZERO) | span.le(L::ZERO);
         let x = newton(
             seed(t, span, width, s0, s1),
@@ -546,7 +551,12 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
                 let d = self.at_angle(psi0 + x);
                 (sweep(d) - t, slope(d))
             },
-            |_| L::EPSILON.sqrt() * width,
+            |x| {
+                // Near a tip F grows as the square of the distance to it: the tolerance
+                // follows that distance, as the f64 steps' does.
+                let psi = psi0 + x;
+                L::c(SOLVE_TOLERANCE) * width.min(psi).min(self.width - psi)
+            },
             L::ZERO,
         );
         // Then on F summed in f64. The f32 sweeps are off by a few ε of the arcs' angles, and
@@ -832,19 +842,51 @@ fn newton<L: Math>(
     x
 }
 
-/// x ∈ [0, w] where the quadratic through (0, 0) and (w, F) with slope s₀ at 0 reaches t (with
-/// slope s₁ at w, measured from w, where the first would not be monotone): the seed of the
-/// decentral solve. It is exact for a corner of straight sides (s₀ = 0), where F grows as x².
+/// x ∈ [0, w] where the cubic through (0, 0) and (w, F) with slopes s₀ at 0 and s₁ at w (the
+/// Hermite interpolant of the sector's F) reaches t: the seed of the decentral solve.
+///
+/// It starts from the quadratic through the ends with slope s₀ at 0 (with s₁ at w, measured
+/// from w, where the first would not be monotone), which is exact for a corner of straight
+/// sides (s₀ = 0), where F grows as x², and takes two Newton steps on the cubic, kept in
+/// [0, w]; within 1/16 of the sector's ends it keeps the quadratic's root. The f32 steps then
+/// take 2.0 evaluations per sample for the registry's decentral triangle, 1.2 for its square
+/// and 1.2 over 2000 random decentral triangles.
 #[inline(always)]
 fn seed<L: Math>(t: L, span: L, w: L, s0: L, s1: L) -> L {
     let forward = (s0 * w).le(L::TWO * span);
-    let (s, t) = (L::select(forward, s0, s1), L::select(forward, t, span - t));
+    let (s, tq) = (L::select(forward, s0, s1), L::select(forward, t, span - t));
     // G(x) = s·x + c·x² with c = (F − s·w)/w²: x = 2t / (s + √(s² + 4ct)).
-    let c4t = L::c(4.0) * (span - s * w) * t / (w * w);
-    let x = L::TWO * t / (s + (s * s + c4t).max(L::ZERO).sqrt());
-    let x = L::select(t.le(L::ZERO), L::ZERO, x);
+    let c4t = L::c(4.0) * (span - s * w) * tq / (w * w);
+    let x = L::TWO * tq / (s + (s * s + c4t).max(L::ZERO).sqrt());
+    let x = L::select(tq.le(L::ZERO), L::ZERO, x);
     let x = L::select(forward, x, w - x);
-    L::select(x.is_finite(), x.max(L::ZERO).min(w), L::HALF * w)
+    let x = L::select(x.is_finite(), x.max(L::ZERO).min(w), L::HALF * w);
+    // The cubic in y = x/w, F·(3y² − 2y³) + s₀w·(y³ − 2y² + y) + s₁w·(y³ − y²), less t, and
+    // its slope.
+    let (a, b) = (s0 * w, s1 * w);
+    let model = |y: L| {
+        let y2 = y * y;
+        let g = span * (L::c(3.0) * y2 - L::TWO * y2 * y)
+            + a * (y2 * y - L::TWO * y2 + y)
+            + b * (y2 * y - y2);
+        let dg = span * (L::c(6.0) * (y - y2))
+            + a * (L::c(3.0) * y2 - L::c(4.0) * y + L::ONE)
+            + b * (L::c(3.0) * y2 - L::TWO * y);
+        (g - t, dg)
+    };
+    let y0 = x / w;
+    let mut y = y0;
+    for _ in 0..2 {
+        let (r, dg) = model(y);
+        let next = y - r / dg;
+        y = L::select(next.is_finite(), next.max(L::ZERO).min(L::ONE), y);
+    }
+    // Near a tip the quadratic is the better model (exact for a corner), and the cubic's slope
+    // there is 0 to its rounding: keep the quadratic's root within 1/16 of either end, and the
+    // cubic's elsewhere only where it fits the model better.
+    let inner = y0.gt(L::c(0.0625)) & y0.lt(L::c(0.9375));
+    let better = inner & model(y).0.abs().lt(model(y0).0.abs());
+    L::select(better & y.is_finite(), y * w, x)
 }
 
 #[inline(always)]

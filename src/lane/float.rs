@@ -456,8 +456,11 @@ impl Lane for f64 {
     }
     inline_fns! {
         fn sqrt(self) -> Self { sqrt_f64(self) }
-        fn abs(self) -> Self { libm::fabs(self) }
-        fn copysign(self, sign: Self) -> Self { libm::copysign(self, sign) }
+        // Bit operations, as IEEE defines them: libm's calls are not inlined across crates.
+        fn abs(self) -> Self { f64::from_bits(self.to_bits() & !(1 << 63)) }
+        fn copysign(self, sign: Self) -> Self {
+            f64::from_bits((self.to_bits() & !(1 << 63)) | (sign.to_bits() & (1 << 63)))
+        }
     }
     scalar_lane!();
 }

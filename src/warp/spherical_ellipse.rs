@@ -61,7 +61,7 @@ use crate::frame::Frame;
 use crate::lane::{Lane, Lanes, Mask, V2, V3, Widen};
 use crate::math::Math;
 use crate::point::{Point2, Point3};
-use crate::warp::common::clamp_u;
+use crate::warp::common::{clamp_u, pick};
 use crate::warp::disk::concentric_with_one_minus_r;
 use crate::warp::family::{is_unit, lane, lanes3};
 use crate::warp::polygon::{cross3_in, dot_wide, dot3_in, unit_wide, widen3};
@@ -315,17 +315,6 @@ impl<T: Lanes<Scalar = f64>> Shape<T> {
         fk + acc * w * T::HALF
     }
 
-    /// Entry k + `off` of `table` in each lane (k a whole number in each), fetched lane by lane:
-    /// a load in the scalar form, where selecting through all the knots cost 200 instructions.
-    #[inline(always)]
-    fn pick(&self, table: &[T], k: T, off: usize) -> T {
-        T::from_fn(|i| {
-            table
-                .get(k.lane(i) as usize + off)
-                .map_or(0.0, |t| t.lane(i))
-        })
-    }
-
     /// The parametric angle τ with F(τ) = t·F(π/2), t ∈ [0, 1], as its knot's cosine and sine
     /// and w = tan(τ − τ_k): the interval by comparisons, the table's cubic Hermite interpolant
     /// of w(F) as the seed, then Newton's steps on [`area_w`](Self::area_w) (dF/dw exact),
@@ -340,13 +329,16 @@ impl<T: Lanes<Scalar = f64>> Shape<T> {
         for f in self.knots.iter().take(KNOTS).skip(1) {
             k = k + T::select(f.le(target), T::ONE, T::ZERO);
         }
-        let (f0, f1) = (self.pick(&self.knots, k, 0), self.pick(&self.knots, k, 1));
+        let (f0, f1) = (
+            pick(&self.knots, k, |f| *f),
+            pick(&self.knots, k + T::ONE, |f| *f),
+        );
         // dw/dF at the interval's ends: dτ/dF there times dw/dτ = 1 + w².
-        let d0 = self.pick(&self.slopes, k, 0);
-        let d1 = self.pick(&self.slopes, k, 1) * T::c(1.0 + TAN_H * TAN_H);
+        let d0 = pick(&self.slopes, k, |d| *d);
+        let d1 = pick(&self.slopes, k + T::ONE, |d| *d) * T::c(1.0 + TAN_H * TAN_H);
         let (kc, ks) = (
-            self.pick(&KNOT_COS.map(T::c), k, 0),
-            self.pick(&KNOT_SIN.map(T::c), k, 0),
+            pick(&KNOT_COS, k, |&c| T::c(c)),
+            pick(&KNOT_SIN, k, |&c| T::c(c)),
         );
         let top = T::c(TAN_H);
         let span = f1 - f0;
@@ -574,10 +566,10 @@ impl<L: Math> Ellipse<L> {
             k = k + W::<L>::select((st * cj).ge(ct * sj), W::<L>::ONE, zero);
         }
         let (kc, ks) = (
-            sh.pick(&KNOT_COS.map(W::<L>::c), k, 0),
-            sh.pick(&KNOT_SIN.map(W::<L>::c), k, 0),
+            pick(&KNOT_COS, k, |&c| W::<L>::c(c)),
+            pick(&KNOT_SIN, k, |&c| W::<L>::c(c)),
         );
-        let fk = sh.pick(&sh.knots, k, 0);
+        let fk = pick(&sh.knots, k, |f| *f);
         let w = ((st * kc - ct * ks) / (ct * kc + st * ks)).clamp(zero, W::<L>::c(TAN_H));
         let g = (sh.area_w(kc, ks, fk, w) / sh.total()).clamp(zero, W::<L>::ONE);
         // Quarters by sign: (+, +) 0, (−, +) 1, (−, −) 2, (+, −) 3; the odd ones mirrored.

@@ -258,58 +258,84 @@ pub trait Lane:
 
 /// a·b + c, fused exactly where the packet's `mul_add` is, so that both widths agree bit for bit.
 ///
-/// wide fuses f32x4 and f32x8 under the same condition (`target_feature = "fma"`), so lane 0 of
-/// an f32x4 is the scalar twin of a packet FMA: one vfmadd…ss with FMA, a multiply and an add
-/// without. But with FMA that route leaves a vector-typed intrinsic in the caller's loop, which
-/// LLVM's loop vectoriser refuses ("instruction return type cannot be vectorized"): seven of
-/// nine warp loops stayed scalar in `examples/vectorize.rs`. Where std is linked, its `mul_add`
-/// is the scalar `llvm.fma.f32`, the same single rounding, which the vectoriser widens. (core has
-/// no `mul_add` on stable, so a no_std build with FMA keeps the f32x4 route.)
+/// wide fuses f32x4 and f32x8 on x86 with FMA and on aarch64, and elsewhere computes a·b + c
+/// with two roundings. So does this, in scalar instructions:
+/// - Without fusion, the plain expression. Lane 0 of an f32x4 gives the same bits, but LLVM
+///   does not always see through the splats: it kept shuffles and packed multiplies in the
+///   scalar spherical triangle's loop in `benches/peers.rs`.
+/// - With fusion and std, std's `mul_add`, the scalar `llvm.fma.f32`: a vector intrinsic left in
+///   the caller's loop makes LLVM's loop vectoriser refuse it ("instruction return type cannot be
+///   vectorized": seven of nine warp loops stayed scalar in `examples/vectorize.rs`).
+/// - With fusion and no std (core has no `mul_add` on stable), lane 0 of wide's f32x4.
 #[inline(always)]
 fn fma_f32(a: f32, b: f32, c: f32) -> f32 {
-    #[cfg(all(feature = "std", target_arch = "x86_64", target_feature = "fma"))]
+    #[cfg(all(
+        feature = "std",
+        any(
+            all(target_feature = "sse2", target_feature = "fma"),
+            all(target_arch = "aarch64", target_feature = "neon")
+        )
+    ))]
     {
         a.mul_add(b, c)
     }
-    #[cfg(not(all(feature = "std", target_arch = "x86_64", target_feature = "fma")))]
+    #[cfg(all(
+        not(feature = "std"),
+        any(
+            all(target_feature = "sse2", target_feature = "fma"),
+            all(target_arch = "aarch64", target_feature = "neon")
+        )
+    ))]
     {
         wide::f32x4::splat(a)
             .mul_add(wide::f32x4::splat(b), wide::f32x4::splat(c))
             .to_array()[0]
     }
+    #[cfg(not(any(
+        all(target_feature = "sse2", target_feature = "fma"),
+        all(target_arch = "aarch64", target_feature = "neon")
+    )))]
+    {
+        a * b + c
+    }
 }
 
 /// Correctly rounded f32 square root, encoded for the build.
 ///
-/// On x86, libm's `sqrtf` is an inline-asm `sqrtss`, which LLVM emits as written, never in its
-/// VEX form: in an AVX build with the upper halves of the ymm registers dirty (the normal state
-/// of AVX code) every such instruction pays the SSE/AVX transition, which made the scalar
-/// spherical triangle 17× slower in the report. The intrinsic through lane 0 of an f32x4 is
-/// encoded for the target (`vsqrtss` with AVX). Elsewhere libm's, which uses the hardware
-/// instruction where it has one.
+/// With std, std's `sqrt`, the scalar `llvm.sqrt.f32`, which LLVM encodes for the target and
+/// widens when it vectorises the caller's loop. Without it, on x86, lane 0 of wide's f32x4:
+/// libm's `sqrtf` there is an inline-asm `sqrtss`, which LLVM emits as written, never in its VEX
+/// form, so that in an AVX build with the upper halves of the ymm registers dirty (the normal
+/// state of AVX code) every root pays the SSE/AVX transition (it made the scalar spherical
+/// triangle 17× slower). Elsewhere libm's, which uses the hardware instruction where there is one.
 #[inline(always)]
 fn sqrt_f32(x: f32) -> f32 {
-    #[cfg(target_feature = "sse")]
+    #[cfg(feature = "std")]
+    {
+        x.sqrt()
+    }
+    #[cfg(all(not(feature = "std"), target_feature = "sse"))]
     {
         wide::f32x4::splat(x).sqrt().to_array()[0]
     }
-    #[cfg(not(target_feature = "sse"))]
+    #[cfg(all(not(feature = "std"), not(target_feature = "sse")))]
     {
         libm::sqrtf(x)
     }
 }
 
-/// The correctly rounded square root of an f64, as [`sqrt_f32`] does it: through wide's
-/// `f64x2` where the target has SSE2, so that an AVX build gets `vsqrtsd` and not libm's
-/// legacy-SSE inline assembly, whose switch between encodings cost the scalar spherical triangle,
-/// with three f64 roots per set-up, 3.3× its time in the AVX2 build.
+/// The correctly rounded square root of an f64, chosen as [`sqrt_f32`] is.
 #[inline(always)]
 pub(crate) fn sqrt_f64(x: f64) -> f64 {
-    #[cfg(target_feature = "sse2")]
+    #[cfg(feature = "std")]
+    {
+        x.sqrt()
+    }
+    #[cfg(all(not(feature = "std"), target_feature = "sse2"))]
     {
         wide::f64x2::splat(x).sqrt().to_array()[0]
     }
-    #[cfg(not(target_feature = "sse2"))]
+    #[cfg(all(not(feature = "std"), not(target_feature = "sse2")))]
     {
         libm::sqrt(x)
     }

@@ -479,13 +479,13 @@ impl<L: Math> Cap<L> {
         clamp_u(u)
     }
 
-    /// True where unit ω is within the cap, widened by 2ε in sin θ (θ from the centre), as the
-    /// sphere light's own test.
+    /// True where ω, of squared length `len2`, is within the cap, widened by 2ε in sin θ (θ from
+    /// the centre), as the sphere light's own test.
     #[inline(always)]
-    fn on_cap(&self, w: V3<L>) -> L::Mask {
+    fn on_cap(&self, w: V3<L>, len2: L) -> L::Mask {
         let bound = self.s + L::TWO * L::EPSILON;
         let x = w.cross(self.c);
-        w.dot(self.c).gt(L::ZERO) & x.dot(x).le(bound * bound)
+        w.dot(self.c).gt(L::ZERO) & x.dot(x).le(bound * bound * len2)
     }
 }
 
@@ -573,10 +573,24 @@ impl<P: Point3<Lane = L>, L: Math> ProjectedCap<P> {
     #[inline(always)]
     fn pdf_lanes(&self, w: V3<L>) -> L {
         let c = &self.0;
-        let w = w.normalize_scaled();
-        let on_cap = c.on_cap(w);
+        // ω is not normalised: cos θ is n·ω / |ω| and the cap's test scales by |ω|², one root
+        // and one division on the sample's critical path where `normalize` has a root and four
+        // divisions. A vector whose squares could overflow or reach the subnormals is first
+        // divided by its largest component, in the lanes that need it and only where one does
+        // (never for a sample, which is unit to rounding).
+        let m = w.x.abs().max(w.y.abs()).max(w.z.abs());
+        let extreme = m.lt(L::c(9.094947017729282e-13)) | m.gt(L::c(1.099511627776e12));
+        let w = if extreme.any() {
+            // As `normalize_scaled`: zero and subnormal magnitudes give NaN.
+            let m = L::select(m.ge(L::c(f32::MIN_POSITIVE as f64)), m, L::c(f64::NAN));
+            V3::select(extreme, w.scale(L::ONE / m), w)
+        } else {
+            w
+        };
+        let len2 = w.dot(w);
+        let on_cap = c.on_cap(w, len2);
         let cos = w.dot(c.n);
-        let own = L::select(on_cap & cos.gt(L::ZERO), cos / c.p, L::ZERO);
+        let own = L::select(on_cap & cos.gt(L::ZERO), cos / (len2.sqrt() * c.p), L::ZERO);
         // The cone's pdf, 0 where it overflows (h below about 4.6e-40), as `uniform_cone_pdf`.
         let cone = if (!c.valid).any() {
             let cone = L::c(0.5 / PI) / c.h;

@@ -2,7 +2,7 @@
 
 use core::ops::{Add, Neg, Sub};
 
-use super::float::Lane;
+use super::float::{Lane, Mask};
 
 /// A 2D vector whose components are lanes: `V2<f32>` is one point, `V2<F32x8>` eight.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -120,9 +120,29 @@ impl<L: Lane> V3<L> {
     /// component, ±∞ and NaN give NaN components.
     #[inline(always)]
     pub fn normalize_scaled(self) -> Self {
+        self.scale(L::ONE / self.largest()).normalize()
+    }
+    /// `self`, or, in the lanes whose largest component's magnitude lies outside [2⁻⁴⁰, 2⁴⁰],
+    /// `self` divided by it: a vector whose squared length neither overflows nor reaches the
+    /// subnormals, for a caller that needs only its direction (n·ω/|ω|) and would rather not
+    /// pay `normalize`'s divisions. The division happens only where some lane needs it. Zero,
+    /// a subnormal largest component and ±∞ give NaN components, as in
+    /// [`normalize_scaled`](Self::normalize_scaled).
+    #[inline(always)]
+    pub fn in_square_range(self) -> Self {
         let m = self.x.abs().max(self.y.abs()).max(self.z.abs());
-        let m = L::select(m.ge(L::c(f32::MIN_POSITIVE as f64)), m, L::c(f64::NAN));
-        self.scale(L::ONE / m).normalize()
+        let extreme = m.lt(L::c(9.094947017729282e-13)) | m.gt(L::c(1.099511627776e12));
+        if extreme.any() {
+            Self::select(extreme, self.scale(L::ONE / self.largest()), self)
+        } else {
+            self
+        }
+    }
+    /// The largest component's magnitude, or NaN where it is zero or subnormal.
+    #[inline(always)]
+    fn largest(self) -> L {
+        let m = self.x.abs().max(self.y.abs()).max(self.z.abs());
+        L::select(m.ge(L::c(f32::MIN_POSITIVE as f64)), m, L::c(f64::NAN))
     }
     /// Every component times `s`.
     #[inline(always)]

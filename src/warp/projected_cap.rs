@@ -575,18 +575,8 @@ impl<P: Point3<Lane = L>, L: Math> ProjectedCap<P> {
         let c = &self.0;
         // ω is not normalised: cos θ is n·ω / |ω| and the cap's test scales by |ω|², one root
         // and one division on the sample's critical path where `normalize` has a root and four
-        // divisions. A vector whose squares could overflow or reach the subnormals is first
-        // divided by its largest component, in the lanes that need it and only where one does
-        // (never for a sample, which is unit to rounding).
-        let m = w.x.abs().max(w.y.abs()).max(w.z.abs());
-        let extreme = m.lt(L::c(9.094947017729282e-13)) | m.gt(L::c(1.099511627776e12));
-        let w = if extreme.any() {
-            // As `normalize_scaled`: zero and subnormal magnitudes give NaN.
-            let m = L::select(m.ge(L::c(f32::MIN_POSITIVE as f64)), m, L::c(f64::NAN));
-            V3::select(extreme, w.scale(L::ONE / m), w)
-        } else {
-            w
-        };
+        // divisions.
+        let w = w.in_square_range();
         let len2 = w.dot(w);
         let on_cap = c.on_cap(w, len2);
         let cos = w.dot(c.n);

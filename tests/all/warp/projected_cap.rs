@@ -267,6 +267,21 @@ fn bad_input() {
             "{u}: {w} {pdf}"
         );
     }
+    // The pdf of a direction is the pdf of any positive multiple of it: its squared length is
+    // kept in range by rescaling, not overflowed (1e20 and beyond) or flushed (1e-20 and below).
+    let (w, pdf) = projected_cap(Vec2::new(0.3, 0.6), c, 0.5, Vec3::Z);
+    assert!(pdf > 0.0);
+    for k in [1e-37f32, 1e-30, 1e-20, 1e-12, 1e12, 1e20, 1e30, 1e37] {
+        let scaled = projected_cap_pdf(w * k, c, 0.5, Vec3::Z);
+        assert!(
+            (scaled / pdf - 1.0).abs() < 1e-6,
+            "{k}: {scaled} against {pdf}"
+        );
+    }
+    // Zero, a subnormal largest component and an infinite one have no direction: pdf 0.
+    for v in [Vec3::ZERO, w * 1e-40, Vec3::new(f32::INFINITY, 0.0, 1.0)] {
+        assert_eq!(projected_cap_pdf(v, c, 0.5, Vec3::Z), 0.0, "{v}");
+    }
     // A huge and a tiny scene give the same map as the unit one (f64 set-up, scaled frames).
     for k in [1e-20f32, 1e20] {
         let (w, pdf) = projected_cap(Vec2::new(0.3, 0.6), c * k, 0.5 * k, Vec3::Z);

@@ -118,3 +118,121 @@ impl<L: Math> Point3 for V3<L> {
         v
     }
 }
+
+/// A value of one width as two values of half its width, where the build runs the width as two
+/// halves, or as itself: the lanes ([`Math::Half`]), [`V2`], [`V3`], arrays and tuples of them.
+///
+/// Without AVX-512, `wide` runs each [`F32x16`](crate::x16::F32x16) operation as two eight-wide
+/// ones, so a long algorithm at width 16 holds every intermediate in twice the registers of width
+/// 8 and spills: the spherical triangle's free function took 1.3–1.7× the time per sample of
+/// its eight-wide form. The free functions of the long samplers (the spherical, bilinear and
+/// projected polygons, the projected cap, the spherical ellipse) therefore run a sixteen-wide
+/// call as two eight-wide calls there (`by_halves`). Lane *i* is the scalar computation on lane
+/// *i*'s inputs either way.
+pub trait Split: Copy {
+    /// The type of a half: `Self` where the width runs whole.
+    type Half: Copy;
+    /// True where the width runs as two halves.
+    const SPLIT: bool;
+    /// The two halves, lanes 0..w/2 and w/2..w; where the width runs whole, `self` twice.
+    fn halves(self) -> (Self::Half, Self::Half);
+    /// The value whose halves are `lo` and `hi`; where the width runs whole, `lo`.
+    fn join(lo: Self::Half, hi: Self::Half) -> Self;
+}
+
+/// `f(x)`, or, where `x`'s width runs as two halves, `f` of each half, joined. The long
+/// algorithms' public entries call it once, at the top; the short warps gain nothing from it.
+#[inline(always)]
+pub(crate) fn by_halves<I: Split, O: Split>(x: I, f: impl Fn(I::Half) -> O::Half) -> O {
+    let (lo, hi) = x.halves();
+    let lo = f(lo);
+    // Where the width runs whole, `hi` is `lo` again, and the second call is never made.
+    let hi = if I::SPLIT { f(hi) } else { lo };
+    O::join(lo, hi)
+}
+
+impl<L: Math> Split for L {
+    type Half = L::Half;
+    const SPLIT: bool = L::SPLIT;
+    #[inline(always)]
+    fn halves(self) -> (L::Half, L::Half) {
+        Math::halves(self)
+    }
+    #[inline(always)]
+    fn join(lo: L::Half, hi: L::Half) -> L {
+        Math::join(lo, hi)
+    }
+}
+
+impl<L: Math> Split for V2<L> {
+    type Half = V2<L::Half>;
+    const SPLIT: bool = L::SPLIT;
+    #[inline(always)]
+    fn halves(self) -> (Self::Half, Self::Half) {
+        let ((x0, x1), (y0, y1)) = (self.x.halves(), self.y.halves());
+        (V2::new(x0, y0), V2::new(x1, y1))
+    }
+    #[inline(always)]
+    fn join(lo: Self::Half, hi: Self::Half) -> Self {
+        V2::new(L::join(lo.x, hi.x), L::join(lo.y, hi.y))
+    }
+}
+
+impl<L: Math> Split for V3<L> {
+    type Half = V3<L::Half>;
+    const SPLIT: bool = L::SPLIT;
+    #[inline(always)]
+    fn halves(self) -> (Self::Half, Self::Half) {
+        let ((x0, x1), (y0, y1), (z0, z1)) = (self.x.halves(), self.y.halves(), self.z.halves());
+        (V3::new(x0, y0, z0), V3::new(x1, y1, z1))
+    }
+    #[inline(always)]
+    fn join(lo: Self::Half, hi: Self::Half) -> Self {
+        V3::new(
+            L::join(lo.x, hi.x),
+            L::join(lo.y, hi.y),
+            L::join(lo.z, hi.z),
+        )
+    }
+}
+
+impl<T: Split, const N: usize> Split for [T; N] {
+    type Half = [T::Half; N];
+    const SPLIT: bool = T::SPLIT;
+    #[inline(always)]
+    fn halves(self) -> (Self::Half, Self::Half) {
+        (self.map(|t| t.halves().0), self.map(|t| t.halves().1))
+    }
+    #[inline(always)]
+    fn join(lo: Self::Half, hi: Self::Half) -> Self {
+        let mut hi = hi.into_iter();
+        // `hi` has N elements, so the fallback is never taken.
+        lo.map(|l| T::join(l, hi.next().unwrap_or(l)))
+    }
+}
+
+/// Tuples split element by element: a function's arguments, or its results, as one value.
+macro_rules! tuples {
+    ($(($($t:ident $i:tt),+))*) => {$(
+        impl<$($t: Split),+> Split for ($($t,)+) {
+            type Half = ($($t::Half,)+);
+            const SPLIT: bool = $($t::SPLIT)|+;
+            #[inline(always)]
+            fn halves(self) -> (Self::Half, Self::Half) {
+                let parts = ($(self.$i.halves(),)+);
+                (($(parts.$i.0,)+), ($(parts.$i.1,)+))
+            }
+            #[inline(always)]
+            fn join(lo: Self::Half, hi: Self::Half) -> Self {
+                ($($t::join(lo.$i, hi.$i),)+)
+            }
+        }
+    )*};
+}
+
+tuples! {
+    (A 0, B 1)
+    (A 0, B 1, C 2)
+    (A 0, B 1, C 2, D 3)
+    (A 0, B 1, C 2, D 3, E 4)
+}

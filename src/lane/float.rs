@@ -32,6 +32,22 @@ pub struct F64x16 {
     pub hi: F64x8,
 }
 
+/// An [`F32x16`] as its two eight-lane halves, lanes 0..8 and 8..16.
+#[cfg(not(target_feature = "avx512f"))]
+#[inline(always)]
+pub(crate) fn halves16(x: F32x16) -> (F32x8, F32x8) {
+    // Without AVX-512 `wide` stores an f32x16 as two f32x8, so this is a move of registers.
+    let [lo, hi]: [F32x8; 2] = bytemuck::cast(x);
+    (lo, hi)
+}
+
+/// The [`F32x16`] whose halves are `lo` and `hi`.
+#[cfg(not(target_feature = "avx512f"))]
+#[inline(always)]
+pub(crate) fn join16(lo: F32x8, hi: F32x8) -> F32x16 {
+    bytemuck::cast([lo, hi])
+}
+
 /// `F64x16`'s operators, each half by F64x8's.
 macro_rules! halves_op {
     ($($tr:ident $f:ident),*) => {$(

@@ -47,6 +47,8 @@ mod int;
 mod vector;
 
 pub use float::{F32x8, F32x16, F64x8, F64x16, Lane, Lanes, Mask, Widen};
+#[cfg(not(target_feature = "avx512f"))]
+pub(crate) use float::{halves16, join16};
 pub use int::{Lane32, U32Lane, U32x8, U32x16};
 pub(crate) use vector::packet_vectors;
 pub use vector::{V2, V3};

@@ -109,6 +109,16 @@ use crate::lane::{F32x8, F32x16, Lane, Widen, inline_fns};
 /// [`F32x16`],
 /// libm for the `f64` reference. Warps are generic over `L: Math`.
 pub trait Math: Widen {
+    /// The lane a long algorithm runs at: half this width where the build runs this width as two
+    /// halves ([`F32x8`] for [`F32x16`] without AVX-512), else `Self`
+    /// ([`Split`](crate::point::Split)).
+    type Half: Math;
+    /// True where the width runs as two halves.
+    const SPLIT: bool;
+    /// Lanes 0..w/2 and w/2..w; where the width runs whole, `self` twice.
+    fn halves(self) -> (Self::Half, Self::Half);
+    /// The lane whose halves are `lo` and `hi`; where the width runs whole, `lo`.
+    fn join(lo: Self::Half, hi: Self::Half) -> Self;
     /// sin and cos, within the table's bound for |x| ≤ 6433.
     fn sin_cos(self) -> (Self, Self);
     /// sin and cos of 2π·self, with exact range reduction in `self`.
@@ -137,8 +147,9 @@ pub trait Math: Widen {
 
 /// The f32 lanes run the same generic polynomials, which is what makes them agree bit for bit.
 macro_rules! own_math {
-    ($t:ty) => {
+    ($t:ty, $halves:ident) => {
         impl Math for $t {
+            $halves!($t);
             inline_fns! {
                 fn sin_cos(self) -> (Self, Self) { trig::sin_cos(self) }
                 fn sincos_2pi(self) -> (Self, Self) { trig::sincos_2pi(self) }
@@ -156,12 +167,44 @@ macro_rules! own_math {
     };
 }
 
-own_math!(f32);
-own_math!(F32x8);
-own_math!(F32x16);
+/// [`Math`]'s halves for a width that runs whole.
+macro_rules! whole {
+    ($t:ty) => {
+        type Half = $t;
+        const SPLIT: bool = false;
+        inline_fns! {
+            fn halves(self) -> ($t, $t) { (self, self) }
+            fn join(lo: $t, _hi: $t) -> $t { lo }
+        }
+    };
+}
+/// [`F32x16`]'s halves without AVX-512: two [`F32x8`], which is how `wide` stores it.
+#[cfg(not(target_feature = "avx512f"))]
+macro_rules! halves16 {
+    ($t:ty) => {
+        type Half = F32x8;
+        const SPLIT: bool = true;
+        inline_fns! {
+            fn halves(self) -> (F32x8, F32x8) { crate::lane::halves16(self) }
+            fn join(lo: F32x8, hi: F32x8) -> F32x16 { crate::lane::join16(lo, hi) }
+        }
+    };
+}
+/// With AVX-512 an [`F32x16`] is one register and runs whole.
+#[cfg(target_feature = "avx512f")]
+macro_rules! halves16 {
+    ($t:ty) => {
+        whole!($t);
+    };
+}
+
+own_math!(f32, whole);
+own_math!(F32x8, whole);
+own_math!(F32x16, halves16);
 
 /// The reference instance: libm in f64.
 impl Math for f64 {
+    whole!(f64);
     #[inline(always)]
     fn sin_cos(self) -> (Self, Self) {
         libm::sincos(self)

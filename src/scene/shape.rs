@@ -146,7 +146,7 @@ pub trait PreparedShape<V: Point3>: Copy {
     /// dropped (NaN u, a degenerate shape). One exception: through the bilinear warp with
     /// unequal weights the pdf is the density at the u′ the sample drew, and `eval`'s (at the
     /// spherical inverse of the direction) agrees to the inverse's round trip (see
-    /// [`through_bilinear`]). u is clamped to [0, 1]².
+    /// `through_bilinear`). u is clamped to [0, 1]².
     fn sample(&self, u: V::Vec2) -> ShapeSample<V>;
     /// The pdf per steradian with which [`sample`](Self::sample) returns unit direction `wi`,
     /// and the distance to the shape along it: (pdf, t) with pdf > 0 exactly where t < ∞, from

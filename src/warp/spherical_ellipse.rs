@@ -60,7 +60,7 @@ use glam::Vec3;
 use crate::frame::Frame;
 use crate::lane::{Lane, Lanes, Mask, V2, V3, Widen};
 use crate::math::Math;
-use crate::point::{Point2, Point3};
+use crate::point::{Point2, Point3, by_halves};
 use crate::warp::common::{clamp_u, pick};
 use crate::warp::disk::concentric_with_one_minus_r;
 use crate::warp::family::{is_unit, lane, lanes3};
@@ -780,7 +780,11 @@ pub fn spherical_ellipse<P: Point2<Lane = L>, L: Math>(
     normal: P::Vec3,
     radius: L,
 ) -> (P::Vec3, L) {
-    SphericalEllipse::new(center, normal, radius).sample(u)
+    let x = (u.to_lanes(), center.to_lanes(), normal.to_lanes(), radius);
+    let (w, pdf) = by_halves(x, |(u, center, normal, radius)| {
+        SphericalEllipse::new(center, normal, radius).sample(u)
+    });
+    (Point3::from_lanes(w), pdf)
 }
 
 /// pdf per steradian that [`spherical_ellipse`] returns direction `w` (any positive multiple):
@@ -794,7 +798,10 @@ pub fn spherical_ellipse_pdf<P: Point3<Lane = L>, L: Math>(
     normal: P,
     radius: L,
 ) -> L {
-    SphericalEllipse::for_pdf(center, normal, radius).pdf(w)
+    let x = (w.to_lanes(), center.to_lanes(), normal.to_lanes(), radius);
+    by_halves(x, |(w, center, normal, radius)| {
+        SphericalEllipse::for_pdf(center, normal, radius).pdf(w)
+    })
 }
 
 /// Inverse of [`spherical_ellipse`]: the u that maps to direction `w` (any positive multiple),
@@ -806,7 +813,10 @@ pub fn spherical_ellipse_inverse<P: Point3<Lane = L>, L: Math>(
     normal: P,
     radius: L,
 ) -> P::Vec2 {
-    SphericalEllipse::new(center, normal, radius).inverse(w)
+    let x = (w.to_lanes(), center.to_lanes(), normal.to_lanes(), radius);
+    Point2::from_lanes(by_halves(x, |(w, center, normal, radius)| {
+        SphericalEllipse::new(center, normal, radius).inverse(w)
+    }))
 }
 
 /// The registry's [`spherical_ellipse`]: the disk about `c` with normal `n` and radius `r`.

@@ -124,11 +124,10 @@ impl<L: Math> Point3 for V3<L> {
 ///
 /// Without AVX-512, `wide` runs each [`F32x16`](crate::x16::F32x16) operation as two eight-wide
 /// ones, so a long algorithm at width 16 holds every intermediate in twice the registers of width
-/// 8 and spills: the spherical triangle's free function took 1.3–1.7× the time per sample of
-/// its eight-wide form. The free functions of the long samplers (the spherical, bilinear and
-/// projected polygons, the projected cap, the spherical ellipse) therefore run a sixteen-wide
-/// call as two eight-wide calls there (`by_halves`). Lane *i* is the scalar computation on lane
-/// *i*'s inputs either way.
+/// 8 and spills: the spherical rectangle, the projected polygons and the spherical ellipse took
+/// 1.15–1.3× the time per sample of their eight-wide forms. Their free functions therefore run
+/// a sixteen-wide call as two eight-wide calls there (`by_halves`). Lane *i* is the scalar
+/// computation on lane *i*'s inputs either way.
 pub trait Split: Copy {
     /// The type of a half: `Self` where the width runs whole.
     type Half: Copy;

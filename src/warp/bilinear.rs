@@ -15,7 +15,7 @@ use glam::Vec3;
 
 use crate::lane::{Lane, Mask, V2, V3};
 use crate::math::Math;
-use crate::point::{Point2, Point3, by_halves};
+use crate::point::{Point2, Point3};
 use crate::warp::common::{clamp_u, clamp01};
 use crate::warp::family::{is_unit, lanes3};
 use crate::warp::polygon::pow2_scale;
@@ -373,17 +373,7 @@ pub fn bilinear_triangle<P: Point2<Lane = L>, L: Math>(
     c: P::Vec3,
     n: P::Vec3,
 ) -> (P::Vec3, L) {
-    let x = (
-        u.to_lanes(),
-        a.to_lanes(),
-        b.to_lanes(),
-        c.to_lanes(),
-        n.to_lanes(),
-    );
-    let (w, pdf) = by_halves(x, |(u, a, b, c, n)| {
-        BilinearTriangle::new(a, b, c, n).sample(u)
-    });
-    (Point3::from_lanes(w), pdf)
+    BilinearTriangle::new(a, b, c, n).sample(u)
 }
 
 /// pdf per steradian that [`bilinear_triangle`] returns unit direction `w`: the spherical
@@ -391,16 +381,7 @@ pub fn bilinear_triangle<P: Point2<Lane = L>, L: Math>(
 /// 0 (outside, degenerate, NaN).
 #[inline]
 pub fn bilinear_triangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P, c: P, n: P) -> L {
-    let x = (
-        w.to_lanes(),
-        a.to_lanes(),
-        b.to_lanes(),
-        c.to_lanes(),
-        n.to_lanes(),
-    );
-    by_halves(x, |(w, a, b, c, n)| {
-        BilinearTriangle::new(a, b, c, n).pdf(w)
-    })
+    BilinearTriangle::new(a, b, c, n).pdf(w)
 }
 
 /// Inverse of [`bilinear_triangle`]: [`bilinear_inverse`] of the spherical triangle's inverse.
@@ -413,16 +394,7 @@ pub fn bilinear_triangle_inverse<P: Point3<Lane = L>, L: Math>(
     c: P,
     n: P,
 ) -> P::Vec2 {
-    let x = (
-        w.to_lanes(),
-        a.to_lanes(),
-        b.to_lanes(),
-        c.to_lanes(),
-        n.to_lanes(),
-    );
-    Point2::from_lanes(by_halves(x, |(w, a, b, c, n)| {
-        BilinearTriangle::new(a, b, c, n).inverse(w)
-    }))
+    BilinearTriangle::new(a, b, c, n).inverse(w)
 }
 
 /// A rectangle set up for cosine-weighted sampling at one shading point: [`SphericalRectangle`]
@@ -531,17 +503,7 @@ pub fn bilinear_rectangle<P: Point2<Lane = L>, L: Math>(
     ey: P::Vec3,
     n: P::Vec3,
 ) -> (P::Vec3, L) {
-    let x = (
-        u.to_lanes(),
-        corner.to_lanes(),
-        ex.to_lanes(),
-        ey.to_lanes(),
-        n.to_lanes(),
-    );
-    let (w, pdf) = by_halves(x, |(u, corner, ex, ey, n)| {
-        BilinearRectangle::new(corner, ex, ey, n).sample(u)
-    });
-    (Point3::from_lanes(w), pdf)
+    BilinearRectangle::new(corner, ex, ey, n).sample(u)
 }
 
 /// pdf per steradian that [`bilinear_rectangle`] returns a point in direction `p` (any positive
@@ -559,16 +521,7 @@ pub fn bilinear_rectangle_pdf<P: Point3<Lane = L>, L: Math>(
     ey: P,
     n: P,
 ) -> L {
-    let x = (
-        p.to_lanes(),
-        corner.to_lanes(),
-        ex.to_lanes(),
-        ey.to_lanes(),
-        n.to_lanes(),
-    );
-    by_halves(x, |(p, corner, ex, ey, n)| {
-        BilinearRectangle::new(corner, ex, ey, n).pdf(p)
-    })
+    BilinearRectangle::new(corner, ex, ey, n).pdf(p)
 }
 
 /// Inverse of [`bilinear_rectangle`]: [`bilinear_inverse`] of the spherical rectangle's inverse.
@@ -582,16 +535,7 @@ pub fn bilinear_rectangle_inverse<P: Point3<Lane = L>, L: Math>(
     ey: P,
     n: P,
 ) -> P::Vec2 {
-    let x = (
-        p.to_lanes(),
-        corner.to_lanes(),
-        ex.to_lanes(),
-        ey.to_lanes(),
-        n.to_lanes(),
-    );
-    Point2::from_lanes(by_halves(x, |(p, corner, ex, ey, n)| {
-        BilinearRectangle::new(corner, ex, ey, n).inverse(p)
-    }))
+    BilinearRectangle::new(corner, ex, ey, n).inverse(p)
 }
 
 /// The registry's [`bilinear_triangle`] towards vertices `v` for the receiver's normal `n`.
@@ -622,11 +566,10 @@ impl Family for CosineTriangle {
         // sample is kept (a dropped sample's stand-in direction may lie on the light).
         #[inline(always)]
         move |u| {
-            by_halves((u, core::hint::black_box((v, n))), |(u, ([a, b, c], n))| {
-                let t = BilinearTriangle::new(a, b, c, n);
-                let (w, kept) = t.sample(u);
-                (w, Lane::select(kept.gt(Lane::ZERO), t.pdf(w), Lane::ZERO))
-            })
+            let ([a, b, c], n) = core::hint::black_box((v, n));
+            let t = BilinearTriangle::new(a, b, c, n);
+            let (w, kept) = t.sample(u);
+            (w, L::select(kept.gt(L::ZERO), t.pdf(w), L::ZERO))
         }
     }
     fn pdf<L: Math>(&self, x: V3<L>) -> L {
@@ -672,14 +615,10 @@ impl Family for CosineRectangle {
         let (v, n) = (self.v.map(lanes3::<L>), lanes3::<L>(self.n));
         #[inline(always)]
         move |u| {
-            by_halves(
-                (u, core::hint::black_box((v, n))),
-                |(u, ([c, ex, ey], n))| {
-                    let r = BilinearRectangle::new(c, ex, ey, n);
-                    let (p, kept) = r.sample(u);
-                    (p, Lane::select(kept.gt(Lane::ZERO), r.pdf(p), Lane::ZERO))
-                },
-            )
+            let ([c, ex, ey], n) = core::hint::black_box((v, n));
+            let r = BilinearRectangle::new(c, ex, ey, n);
+            let (p, kept) = r.sample(u);
+            (p, L::select(kept.gt(L::ZERO), r.pdf(p), L::ZERO))
         }
     }
     fn pdf<L: Math>(&self, x: V3<L>) -> L {

@@ -124,9 +124,10 @@ impl<L: Math> Point3 for V3<L> {
 ///
 /// Without AVX-512, `wide` runs each [`F32x16`](crate::x16::F32x16) operation as two eight-wide
 /// ones, so a long algorithm at width 16 holds every intermediate in twice the registers of width
-/// 8 and spills: the spherical rectangle, the projected polygons and the spherical ellipse took
-/// 1.15–1.3× the time per sample of their eight-wide forms. Their free functions therefore run
-/// a sixteen-wide call as two eight-wide calls there (`by_halves`). Lane *i* is the scalar
+/// 8 and spills: the spherical triangle took 1.4× the time per sample of its eight-wide form,
+/// the bilinear rectangle 1.8×. The free functions of the long samplers (the spherical,
+/// bilinear and projected polygons, the projected cap, the spherical ellipse) therefore run a
+/// sixteen-wide call as two eight-wide calls there (`by_halves`). Lane *i* is the scalar
 /// computation on lane *i*'s inputs either way.
 pub trait Split: Copy {
     /// The type of a half: `Self` where the width runs whole.
@@ -141,6 +142,11 @@ pub trait Split: Copy {
 
 /// `f(x)`, or, where `x`'s width runs as two halves, `f` of each half, joined. The long
 /// algorithms' public entries call it once, at the top; the short warps gain nothing from it.
+///
+/// Callers mark `f` `#[inline(always)]`. Left to LLVM, a closure called from the x8 path and
+/// twice from the x16 one was kept out of line, and the spherical triangle's x8 form then built
+/// its set-up in one place and copied it to another (two more `memcpy` a sample, 8 % more
+/// instructions, 12 % more time).
 #[inline(always)]
 pub(crate) fn by_halves<I: Split, O: Split>(x: I, f: impl Fn(I::Half) -> O::Half) -> O {
     let (lo, hi) = x.halves();

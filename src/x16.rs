@@ -3,8 +3,8 @@
 //!
 //! With AVX-512 an [`F32x16`] is one register. Without it, `wide` runs each operation on two
 //! eight-wide halves, and every function still gives, in lane *i*, the scalar result on lane
-//! *i*'s input, bit for bit. There the free functions of the spherical rectangle, the projected
-//! triangle and rectangle and the spherical ellipse run as two eight-wide calls
+//! *i*'s input, bit for bit. There the free functions of the spherical, bilinear and projected
+//! polygons, the projected cap and the spherical ellipse run as two eight-wide calls
 //! ([`Split`](crate::point::Split)), which keeps their long set-ups in registers; everything
 //! else, their prepared forms included, runs the sixteen lanes together.
 //!

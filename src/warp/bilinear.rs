@@ -15,7 +15,7 @@ use glam::Vec3;
 
 use crate::lane::{Lane, Mask, V2, V3};
 use crate::math::Math;
-use crate::point::{Point2, Point3};
+use crate::point::{Point2, Point3, by_halves};
 use crate::warp::common::{clamp_u, clamp01};
 use crate::warp::family::{is_unit, lanes3};
 use crate::warp::polygon::pow2_scale;
@@ -373,7 +373,19 @@ pub fn bilinear_triangle<P: Point2<Lane = L>, L: Math>(
     c: P::Vec3,
     n: P::Vec3,
 ) -> (P::Vec3, L) {
-    BilinearTriangle::new(a, b, c, n).sample(u)
+    let x = (
+        u.to_lanes(),
+        a.to_lanes(),
+        b.to_lanes(),
+        c.to_lanes(),
+        n.to_lanes(),
+    );
+    let (w, pdf) = by_halves(
+        x,
+        #[inline(always)]
+        |(u, a, b, c, n)| BilinearTriangle::new(a, b, c, n).sample(u),
+    );
+    (Point3::from_lanes(w), pdf)
 }
 
 /// pdf per steradian that [`bilinear_triangle`] returns unit direction `w`: the spherical
@@ -381,7 +393,18 @@ pub fn bilinear_triangle<P: Point2<Lane = L>, L: Math>(
 /// 0 (outside, degenerate, NaN).
 #[inline]
 pub fn bilinear_triangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P, c: P, n: P) -> L {
-    BilinearTriangle::new(a, b, c, n).pdf(w)
+    let x = (
+        w.to_lanes(),
+        a.to_lanes(),
+        b.to_lanes(),
+        c.to_lanes(),
+        n.to_lanes(),
+    );
+    by_halves(
+        x,
+        #[inline(always)]
+        |(w, a, b, c, n)| BilinearTriangle::new(a, b, c, n).pdf(w),
+    )
 }
 
 /// Inverse of [`bilinear_triangle`]: [`bilinear_inverse`] of the spherical triangle's inverse.
@@ -394,7 +417,18 @@ pub fn bilinear_triangle_inverse<P: Point3<Lane = L>, L: Math>(
     c: P,
     n: P,
 ) -> P::Vec2 {
-    BilinearTriangle::new(a, b, c, n).inverse(w)
+    let x = (
+        w.to_lanes(),
+        a.to_lanes(),
+        b.to_lanes(),
+        c.to_lanes(),
+        n.to_lanes(),
+    );
+    Point2::from_lanes(by_halves(
+        x,
+        #[inline(always)]
+        |(w, a, b, c, n)| BilinearTriangle::new(a, b, c, n).inverse(w),
+    ))
 }
 
 /// A rectangle set up for cosine-weighted sampling at one shading point: [`SphericalRectangle`]
@@ -503,7 +537,19 @@ pub fn bilinear_rectangle<P: Point2<Lane = L>, L: Math>(
     ey: P::Vec3,
     n: P::Vec3,
 ) -> (P::Vec3, L) {
-    BilinearRectangle::new(corner, ex, ey, n).sample(u)
+    let x = (
+        u.to_lanes(),
+        corner.to_lanes(),
+        ex.to_lanes(),
+        ey.to_lanes(),
+        n.to_lanes(),
+    );
+    let (w, pdf) = by_halves(
+        x,
+        #[inline(always)]
+        |(u, corner, ex, ey, n)| BilinearRectangle::new(corner, ex, ey, n).sample(u),
+    );
+    (Point3::from_lanes(w), pdf)
 }
 
 /// pdf per steradian that [`bilinear_rectangle`] returns a point in direction `p` (any positive
@@ -521,7 +567,18 @@ pub fn bilinear_rectangle_pdf<P: Point3<Lane = L>, L: Math>(
     ey: P,
     n: P,
 ) -> L {
-    BilinearRectangle::new(corner, ex, ey, n).pdf(p)
+    let x = (
+        p.to_lanes(),
+        corner.to_lanes(),
+        ex.to_lanes(),
+        ey.to_lanes(),
+        n.to_lanes(),
+    );
+    by_halves(
+        x,
+        #[inline(always)]
+        |(p, corner, ex, ey, n)| BilinearRectangle::new(corner, ex, ey, n).pdf(p),
+    )
 }
 
 /// Inverse of [`bilinear_rectangle`]: [`bilinear_inverse`] of the spherical rectangle's inverse.
@@ -535,7 +592,18 @@ pub fn bilinear_rectangle_inverse<P: Point3<Lane = L>, L: Math>(
     ey: P,
     n: P,
 ) -> P::Vec2 {
-    BilinearRectangle::new(corner, ex, ey, n).inverse(p)
+    let x = (
+        p.to_lanes(),
+        corner.to_lanes(),
+        ex.to_lanes(),
+        ey.to_lanes(),
+        n.to_lanes(),
+    );
+    Point2::from_lanes(by_halves(
+        x,
+        #[inline(always)]
+        |(p, corner, ex, ey, n)| BilinearRectangle::new(corner, ex, ey, n).inverse(p),
+    ))
 }
 
 /// The registry's [`bilinear_triangle`] towards vertices `v` for the receiver's normal `n`.
@@ -566,10 +634,15 @@ impl Family for CosineTriangle {
         // sample is kept (a dropped sample's stand-in direction may lie on the light).
         #[inline(always)]
         move |u| {
-            let ([a, b, c], n) = core::hint::black_box((v, n));
-            let t = BilinearTriangle::new(a, b, c, n);
-            let (w, kept) = t.sample(u);
-            (w, L::select(kept.gt(L::ZERO), t.pdf(w), L::ZERO))
+            by_halves(
+                (u, core::hint::black_box((v, n))),
+                #[inline(always)]
+                |(u, ([a, b, c], n))| {
+                    let t = BilinearTriangle::new(a, b, c, n);
+                    let (w, kept) = t.sample(u);
+                    (w, Lane::select(kept.gt(Lane::ZERO), t.pdf(w), Lane::ZERO))
+                },
+            )
         }
     }
     fn pdf<L: Math>(&self, x: V3<L>) -> L {
@@ -615,10 +688,15 @@ impl Family for CosineRectangle {
         let (v, n) = (self.v.map(lanes3::<L>), lanes3::<L>(self.n));
         #[inline(always)]
         move |u| {
-            let ([c, ex, ey], n) = core::hint::black_box((v, n));
-            let r = BilinearRectangle::new(c, ex, ey, n);
-            let (p, kept) = r.sample(u);
-            (p, L::select(kept.gt(L::ZERO), r.pdf(p), L::ZERO))
+            by_halves(
+                (u, core::hint::black_box((v, n))),
+                #[inline(always)]
+                |(u, ([c, ex, ey], n))| {
+                    let r = BilinearRectangle::new(c, ex, ey, n);
+                    let (p, kept) = r.sample(u);
+                    (p, Lane::select(kept.gt(Lane::ZERO), r.pdf(p), Lane::ZERO))
+                },
+            )
         }
     }
     fn pdf<L: Math>(&self, x: V3<L>) -> L {

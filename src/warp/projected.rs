@@ -1345,9 +1345,11 @@ pub fn projected_triangle<P: Point2<Lane = L>, L: Math>(
         c.to_lanes(),
         n.to_lanes(),
     );
-    let (w, pdf) = by_halves(x, |(u, a, b, c, n)| {
-        ProjectedTriangle::new(a, b, c, n).sample(u)
-    });
+    let (w, pdf) = by_halves(
+        x,
+        #[inline(always)]
+        |(u, a, b, c, n)| ProjectedTriangle::new(a, b, c, n).sample(u),
+    );
     (Point3::from_lanes(w), pdf)
 }
 
@@ -1364,9 +1366,11 @@ pub fn projected_triangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P, c:
         c.to_lanes(),
         n.to_lanes(),
     );
-    by_halves(x, |(w, a, b, c, n)| {
-        ProjectedTriangle::new(a, b, c, n).pdf(w)
-    })
+    by_halves(
+        x,
+        #[inline(always)]
+        |(w, a, b, c, n)| ProjectedTriangle::new(a, b, c, n).pdf(w),
+    )
 }
 
 /// Inverse of [`projected_triangle`]: the u that maps to direction `w`, clamped to the square.
@@ -1386,9 +1390,11 @@ pub fn projected_triangle_inverse<P: Point3<Lane = L>, L: Math>(
         c.to_lanes(),
         n.to_lanes(),
     );
-    Point2::from_lanes(by_halves(x, |(w, a, b, c, n)| {
-        ProjectedTriangle::new(a, b, c, n).inverse(w)
-    }))
+    Point2::from_lanes(by_halves(
+        x,
+        #[inline(always)]
+        |(w, a, b, c, n)| ProjectedTriangle::new(a, b, c, n).inverse(w),
+    ))
 }
 
 /// The registry's [`projected_triangle`] towards vertices `v` for the receiver's normal `n`.
@@ -1488,9 +1494,11 @@ pub fn projected_rectangle<P: Point2<Lane = L>, L: Math>(
         ey.to_lanes(),
         n.to_lanes(),
     );
-    let (w, pdf) = by_halves(x, |(u, corner, ex, ey, n)| {
-        ProjectedRectangle::new(corner, ex, ey, n).sample(u)
-    });
+    let (w, pdf) = by_halves(
+        x,
+        #[inline(always)]
+        |(u, corner, ex, ey, n)| ProjectedRectangle::new(corner, ex, ey, n).sample(u),
+    );
     (Point3::from_lanes(w), pdf)
 }
 
@@ -1512,9 +1520,11 @@ pub fn projected_rectangle_pdf<P: Point3<Lane = L>, L: Math>(
         ey.to_lanes(),
         n.to_lanes(),
     );
-    by_halves(x, |(w, corner, ex, ey, n)| {
-        ProjectedRectangle::new(corner, ex, ey, n).pdf(w)
-    })
+    by_halves(
+        x,
+        #[inline(always)]
+        |(w, corner, ex, ey, n)| ProjectedRectangle::new(corner, ex, ey, n).pdf(w),
+    )
 }
 
 /// Inverse of [`projected_rectangle`]: the u that maps to direction `w`, clamped to the
@@ -1535,9 +1545,11 @@ pub fn projected_rectangle_inverse<P: Point3<Lane = L>, L: Math>(
         ey.to_lanes(),
         n.to_lanes(),
     );
-    Point2::from_lanes(by_halves(x, |(w, corner, ex, ey, n)| {
-        ProjectedRectangle::new(corner, ex, ey, n).inverse(w)
-    }))
+    Point2::from_lanes(by_halves(
+        x,
+        #[inline(always)]
+        |(w, corner, ex, ey, n)| ProjectedRectangle::new(corner, ex, ey, n).inverse(w),
+    ))
 }
 
 /// The registry's [`projected_rectangle`] towards corner + s·ex + t·ey (`v` is corner, ex, ey)

@@ -781,9 +781,11 @@ pub fn spherical_ellipse<P: Point2<Lane = L>, L: Math>(
     radius: L,
 ) -> (P::Vec3, L) {
     let x = (u.to_lanes(), center.to_lanes(), normal.to_lanes(), radius);
-    let (w, pdf) = by_halves(x, |(u, center, normal, radius)| {
-        SphericalEllipse::new(center, normal, radius).sample(u)
-    });
+    let (w, pdf) = by_halves(
+        x,
+        #[inline(always)]
+        |(u, center, normal, radius)| SphericalEllipse::new(center, normal, radius).sample(u),
+    );
     (Point3::from_lanes(w), pdf)
 }
 
@@ -799,9 +801,11 @@ pub fn spherical_ellipse_pdf<P: Point3<Lane = L>, L: Math>(
     radius: L,
 ) -> L {
     let x = (w.to_lanes(), center.to_lanes(), normal.to_lanes(), radius);
-    by_halves(x, |(w, center, normal, radius)| {
-        SphericalEllipse::for_pdf(center, normal, radius).pdf(w)
-    })
+    by_halves(
+        x,
+        #[inline(always)]
+        |(w, center, normal, radius)| SphericalEllipse::for_pdf(center, normal, radius).pdf(w),
+    )
 }
 
 /// Inverse of [`spherical_ellipse`]: the u that maps to direction `w` (any positive multiple),
@@ -814,9 +818,11 @@ pub fn spherical_ellipse_inverse<P: Point3<Lane = L>, L: Math>(
     radius: L,
 ) -> P::Vec2 {
     let x = (w.to_lanes(), center.to_lanes(), normal.to_lanes(), radius);
-    Point2::from_lanes(by_halves(x, |(w, center, normal, radius)| {
-        SphericalEllipse::new(center, normal, radius).inverse(w)
-    }))
+    Point2::from_lanes(by_halves(
+        x,
+        #[inline(always)]
+        |(w, center, normal, radius)| SphericalEllipse::new(center, normal, radius).inverse(w),
+    ))
 }
 
 /// The registry's [`spherical_ellipse`]: the disk about `c` with normal `n` and radius `r`.

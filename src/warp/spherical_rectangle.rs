@@ -811,9 +811,11 @@ pub fn spherical_rectangle<P: Point2<Lane = L>, L: Math>(
         ex.to_lanes(),
         ey.to_lanes(),
     );
-    let (w, pdf) = by_halves(x, |(u, corner, ex, ey)| {
-        SphericalRectangle::new(corner, ex, ey).sample(u)
-    });
+    let (w, pdf) = by_halves(
+        x,
+        #[inline(always)]
+        |(u, corner, ex, ey)| SphericalRectangle::new(corner, ex, ey).sample(u),
+    );
     (Point3::from_lanes(w), pdf)
 }
 
@@ -833,9 +835,11 @@ pub fn spherical_rectangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, corner: P, ex
         ex.to_lanes(),
         ey.to_lanes(),
     );
-    by_halves(x, |(w, corner, ex, ey)| {
-        SphericalRectangle::new(corner, ex, ey).pdf(w)
-    })
+    by_halves(
+        x,
+        #[inline(always)]
+        |(w, corner, ex, ey)| SphericalRectangle::new(corner, ex, ey).pdf(w),
+    )
 }
 
 /// Inverse of [`spherical_rectangle`]: the u that maps to point `p` of the rectangle, in
@@ -859,7 +863,9 @@ pub fn spherical_rectangle_inverse<P: Point3<Lane = L>, L: Math>(
         ex.to_lanes(),
         ey.to_lanes(),
     );
-    Point2::from_lanes(by_halves(x, |(p, corner, ex, ey)| {
-        SphericalRectangle::new(corner, ex, ey).inverse(p)
-    }))
+    Point2::from_lanes(by_halves(
+        x,
+        #[inline(always)]
+        |(p, corner, ex, ey)| SphericalRectangle::new(corner, ex, ey).inverse(p),
+    ))
 }

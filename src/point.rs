@@ -54,10 +54,35 @@ pub trait Point3: Copy {
     type Lane: Math;
     /// The 2D point of the same width.
     type Vec2: Point2<Lane = Self::Lane, Vec3 = Self>;
+    /// The point of the width a long algorithm runs at ([`Split`]): [`V3`] of
+    /// [`Math::Half`] for the packets, `Self` for glam's types.
+    type Half: Point3<Lane = <Self::Lane as Math>::Half>;
     /// The components as lanes.
     fn to_lanes(self) -> V3<Self::Lane>;
     /// The point with components `v`.
     fn from_lanes(v: V3<Self::Lane>) -> Self;
+}
+
+/// Point `v` as its two halves ([`Split`]).
+#[inline(always)]
+pub(crate) fn halves3<V: Point3>(v: V) -> (V::Half, V::Half) {
+    let (lo, hi) = v.to_lanes().halves();
+    (V::Half::from_lanes(lo), V::Half::from_lanes(hi))
+}
+
+/// The point whose halves are `lo` and `hi` ([`Split`]).
+#[inline(always)]
+pub(crate) fn join3<V: Point3>(lo: V::Half, hi: V::Half) -> V {
+    V::from_lanes(V3::join(lo.to_lanes(), hi.to_lanes()))
+}
+
+/// Point `u` as its two halves, of the half width's 2D type.
+#[inline(always)]
+pub(crate) fn halves2<V: Point3>(
+    u: V::Vec2,
+) -> (<V::Half as Point3>::Vec2, <V::Half as Point3>::Vec2) {
+    let (lo, hi) = u.to_lanes().halves();
+    (Point2::from_lanes(lo), Point2::from_lanes(hi))
 }
 
 /// One width's pair of public types, converted through the glam conversions of [`V2`]/[`V3`].
@@ -78,6 +103,7 @@ macro_rules! width {
         impl Point3 for $v3 {
             type Lane = $lane;
             type Vec2 = $v2;
+            type Half = $v3;
             #[inline(always)]
             fn to_lanes(self) -> V3<$lane> {
                 self.into()
@@ -109,6 +135,7 @@ impl<L: Math> Point2 for V2<L> {
 impl<L: Math> Point3 for V3<L> {
     type Lane = L;
     type Vec2 = V2<L>;
+    type Half = V3<L::Half>;
     #[inline(always)]
     fn to_lanes(self) -> V3<L> {
         self
@@ -125,9 +152,10 @@ impl<L: Math> Point3 for V3<L> {
 /// Without AVX-512, `wide` runs each [`F32x16`](crate::x16::F32x16) operation as two eight-wide
 /// ones, so a long algorithm at width 16 holds every intermediate in twice the registers of width
 /// 8 and spills: the spherical triangle took 1.4× the time per sample of its eight-wide form,
-/// the bilinear rectangle 1.8×. The free functions of the long samplers (the spherical,
-/// bilinear and projected polygons, the projected cap, the spherical ellipse) therefore run a
-/// sixteen-wide call as two eight-wide calls there (`by_halves`). Lane *i* is the scalar
+/// the bilinear rectangle 1.8×. The long algorithms (the free functions of the spherical,
+/// bilinear and projected polygons, the projected cap and the spherical ellipse; a light's
+/// queries at a point; the Phong BSDF) therefore run a sixteen-wide call as two eight-wide
+/// calls there (`by_halves`, or a branch on [`Math::SPLIT`] at the top). Lane *i* is the scalar
 /// computation on lane *i*'s inputs either way.
 pub trait Split: Copy {
     /// The type of a half: `Self` where the width runs whole.

@@ -3,10 +3,12 @@
 //!
 //! With AVX-512 an [`F32x16`] is one register. Without it, `wide` runs each operation on two
 //! eight-wide halves, and every function still gives, in lane *i*, the scalar result on lane
-//! *i*'s input, bit for bit. There the free functions of the spherical, bilinear and projected
-//! polygons, the projected cap and the spherical ellipse run as two eight-wide calls
-//! ([`Split`](crate::point::Split)), which keeps their long set-ups in registers; everything
-//! else, their prepared forms included, runs the sixteen lanes together.
+//! *i*'s input, bit for bit. There the long algorithms run as two eight-wide calls
+//! ([`Split`](crate::point::Split)), which keeps their intermediates in registers: the free
+//! functions of the spherical, bilinear and projected polygons, the projected cap and the
+//! spherical ellipse, a light's `sample`, `pdf` and `hit` at a point, and the Phong BSDF.
+//! Everything else runs the sixteen lanes together: the short warps, and the prepared forms
+//! (`SphericalTriangle<Vec3x16>`, a light prepared at a point, the estimator).
 //!
 //! ```
 //! use glam::Vec2;

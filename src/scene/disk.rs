@@ -13,7 +13,7 @@ use super::shape::{
 use crate::frame::Frame;
 use crate::lane::{Lane, Mask, V2, V3};
 use crate::math::Math;
-use crate::point::{Point2, Point3};
+use crate::point::{Point2, Point3, halves3};
 use crate::warp::dot_wide;
 use crate::warp::{SphericalEllipse, concentric_disk};
 
@@ -94,6 +94,25 @@ pub struct PreparedDisk<V: Point3 = Vec3> {
 
 impl<V: Point3<Lane = L>, L: Math> Shape<V> for Disk<V> {
     type Prepared = PreparedDisk<V>;
+    type Half = Disk<V::Half>;
+
+    #[inline(always)]
+    fn halves(&self) -> (Disk<V::Half>, Disk<V::Half>) {
+        let (c, n) = (halves3(self.center), halves3(self.normal));
+        let r = self.radius.halves();
+        (
+            Disk {
+                center: c.0,
+                normal: n.0,
+                radius: r.0,
+            },
+            Disk {
+                center: c.1,
+                normal: n.1,
+                radius: r.1,
+            },
+        )
+    }
 
     #[inline(always)]
     fn at(&self, p: V, _n: V, sampling: LightSampling) -> PreparedDisk<V> {

@@ -11,7 +11,7 @@ use super::shape::{
 };
 use crate::lane::V3;
 use crate::math::Math;
-use crate::point::{Point2, Point3};
+use crate::point::{Point2, Point3, halves3};
 use crate::warp::{
     BilinearRectangle, ProjectedRectangle, SphericalRectangle, plane_dot, wide_cross,
 };
@@ -97,6 +97,24 @@ enum RectangleMap<P: Point3> {
 
 impl<V: Point3<Lane = L>, L: Math> Shape<V> for Rectangle<V> {
     type Prepared = PreparedRectangle<V>;
+    type Half = Rectangle<V::Half>;
+
+    #[inline(always)]
+    fn halves(&self) -> (Rectangle<V::Half>, Rectangle<V::Half>) {
+        let (c, x, y) = (halves3(self.corner), halves3(self.ex), halves3(self.ey));
+        (
+            Rectangle {
+                corner: c.0,
+                ex: x.0,
+                ey: y.0,
+            },
+            Rectangle {
+                corner: c.1,
+                ex: x.1,
+                ey: y.1,
+            },
+        )
+    }
 
     #[inline(always)]
     fn at(&self, p: V, n: V, sampling: LightSampling) -> PreparedRectangle<V> {

@@ -56,6 +56,16 @@ macro_rules! shapes {
 
         impl<V: Point3<Lane = L>, L: Math> Shape<V> for AnyShape<V> {
             type Prepared = AnyPrepared<V>;
+            type Half = AnyShape<V::Half>;
+            #[inline(always)]
+            fn halves(&self) -> (AnyShape<V::Half>, AnyShape<V::Half>) {
+                match self {
+                    $(Self::$name(s) => {
+                        let (lo, hi) = s.halves();
+                        (AnyShape::$name(lo), AnyShape::$name(hi))
+                    })*
+                }
+            }
             // Out of line: inlined into a caller that stores the result, the variant is built
             // on the stack and then copied, enum and all, to where it is kept.
             #[inline(never)]

@@ -12,7 +12,7 @@ use super::shape::{
 };
 use crate::lane::V3;
 use crate::math::Math;
-use crate::point::{Point2, Point3};
+use crate::point::{Point2, Point3, halves3};
 use crate::warp::plane_dot;
 use crate::warp::{
     BilinearTriangle, ProjectedTriangle, SphericalTriangle, uniform_triangle, wide_cross,
@@ -105,6 +105,16 @@ impl<P: Point3<Lane = L>, L: Math> TriangleMap<P> {
 
 impl<V: Point3<Lane = L>, L: Math> Shape<V> for Triangle<V> {
     type Prepared = PreparedTriangle<V>;
+    type Half = Triangle<V::Half>;
+
+    #[inline(always)]
+    fn halves(&self) -> (Triangle<V::Half>, Triangle<V::Half>) {
+        let v = self.v.map(halves3);
+        (
+            Triangle { v: v.map(|h| h.0) },
+            Triangle { v: v.map(|h| h.1) },
+        )
+    }
 
     #[inline(always)]
     fn at(&self, p: V, n: V, sampling: LightSampling) -> PreparedTriangle<V> {

@@ -372,3 +372,36 @@ fn the_tent_pair_drops_both_coordinates_at_nan_in_either() {
     let (t, _) = s.sample(Vec2::new(0.3, 0.9));
     assert_eq!((t.x, t.y), (warp::tent(0.3), warp::tent(0.9)));
 }
+
+/// Without AVX-512 a sixteen-wide value splits into its lanes 0..8 and 8..16 and joins back to
+/// itself bit for bit; with AVX-512 it runs whole, as every narrower lane does. The lanes checks
+/// above catch a wrong join in the long samplers; this catches a split that never happens (a
+/// wrong `cfg`), which they cannot see.
+#[test]
+fn sixteen_lanes_split_only_without_avx512() {
+    use mcsample::lane::{Lanes, V3};
+    use mcsample::math::Math;
+    use mcsample::point::Split;
+    assert_eq!(<F32x16 as Math>::SPLIT, !cfg!(target_feature = "avx512f"));
+    const { assert!(!<F32x8 as Math>::SPLIT && !<f32 as Math>::SPLIT && !<f64 as Math>::SPLIT) };
+    let x = F32x16::new(std::array::from_fn(|i| i as f32 - 7.5));
+    let v = V3::new(x, x * F32x16::splat(-2.0), F32x16::splat(f32::NAN));
+    let (lo, hi) = v.halves();
+    let half = <<F32x16 as Math>::Half as Lanes>::WIDTH;
+    assert_eq!(half, if <F32x16 as Math>::SPLIT { 8 } else { 16 });
+    for i in 0..16 {
+        let got = if i < half {
+            lo.x.lane(i)
+        } else {
+            hi.x.lane(i - half)
+        };
+        assert_eq!(got.to_bits(), x.to_array()[i].to_bits(), "lane {i}");
+    }
+    let back: V3<F32x16> = Split::join(lo, hi);
+    for (a, b) in [(back.x, v.x), (back.y, v.y), (back.z, v.z)] {
+        assert_eq!(
+            a.to_array().map(f32::to_bits),
+            b.to_array().map(f32::to_bits)
+        );
+    }
+}

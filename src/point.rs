@@ -184,6 +184,34 @@ pub(crate) fn by_halves<I: Split, O: Split>(x: I, f: impl Fn(I::Half) -> O::Half
     O::join(lo, hi)
 }
 
+/// The body of a long sampler's free function: its prepared type built and queried on each half
+/// ([`by_halves`]). `halved!(sample Type::new(a, b) at u)` returns the sample and its pdf as the
+/// call's width; `pdf … at w` the pdf; `inverse … at w` the u. The arguments are points of the
+/// call's width, or lanes where marked `r: lane`. The closure is always inlined (see
+/// [`by_halves`]).
+macro_rules! halved {
+    (@lanes $g:ident) => { $g.to_lanes() };
+    (@lanes $g:ident lane) => { $g };
+    (@run $t:ident::$new:ident($($g:ident $(: $k:ident)?),*), $q:ident, $x:ident) => {
+        $crate::point::by_halves(
+            ($x.to_lanes(), $($crate::point::halved!(@lanes $g $($k)?)),*),
+            #[inline(always)]
+            |($x, $($g),*)| $t::$new($($g),*).$q($x),
+        )
+    };
+    (sample $t:ident::$new:ident $args:tt at $x:ident) => {{
+        let (w, pdf) = $crate::point::halved!(@run $t::$new $args, sample, $x);
+        ($crate::point::Point3::from_lanes(w), pdf)
+    }};
+    (pdf $t:ident::$new:ident $args:tt at $x:ident) => {
+        $crate::point::halved!(@run $t::$new $args, pdf, $x)
+    };
+    (inverse $t:ident::$new:ident $args:tt at $x:ident) => {
+        $crate::point::Point2::from_lanes($crate::point::halved!(@run $t::$new $args, inverse, $x))
+    };
+}
+pub(crate) use halved;
+
 impl<L: Math> Split for L {
     type Half = L::Half;
     const SPLIT: bool = L::SPLIT;

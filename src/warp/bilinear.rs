@@ -15,7 +15,7 @@ use glam::Vec3;
 
 use crate::lane::{Lane, Mask, V2, V3};
 use crate::math::Math;
-use crate::point::{Point2, Point3, by_halves};
+use crate::point::{Point2, Point3, by_halves, halved};
 use crate::warp::common::{clamp_u, clamp01};
 use crate::warp::family::{is_unit, lanes3};
 use crate::warp::polygon::pow2_scale;
@@ -373,19 +373,7 @@ pub fn bilinear_triangle<P: Point2<Lane = L>, L: Math>(
     c: P::Vec3,
     n: P::Vec3,
 ) -> (P::Vec3, L) {
-    let x = (
-        u.to_lanes(),
-        a.to_lanes(),
-        b.to_lanes(),
-        c.to_lanes(),
-        n.to_lanes(),
-    );
-    let (w, pdf) = by_halves(
-        x,
-        #[inline(always)]
-        |(u, a, b, c, n)| BilinearTriangle::new(a, b, c, n).sample(u),
-    );
-    (Point3::from_lanes(w), pdf)
+    halved!(sample BilinearTriangle::new(a, b, c, n) at u)
 }
 
 /// pdf per steradian that [`bilinear_triangle`] returns unit direction `w`: the spherical
@@ -393,18 +381,7 @@ pub fn bilinear_triangle<P: Point2<Lane = L>, L: Math>(
 /// 0 (outside, degenerate, NaN).
 #[inline]
 pub fn bilinear_triangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P, c: P, n: P) -> L {
-    let x = (
-        w.to_lanes(),
-        a.to_lanes(),
-        b.to_lanes(),
-        c.to_lanes(),
-        n.to_lanes(),
-    );
-    by_halves(
-        x,
-        #[inline(always)]
-        |(w, a, b, c, n)| BilinearTriangle::new(a, b, c, n).pdf(w),
-    )
+    halved!(pdf BilinearTriangle::new(a, b, c, n) at w)
 }
 
 /// Inverse of [`bilinear_triangle`]: [`bilinear_inverse`] of the spherical triangle's inverse.
@@ -417,18 +394,7 @@ pub fn bilinear_triangle_inverse<P: Point3<Lane = L>, L: Math>(
     c: P,
     n: P,
 ) -> P::Vec2 {
-    let x = (
-        w.to_lanes(),
-        a.to_lanes(),
-        b.to_lanes(),
-        c.to_lanes(),
-        n.to_lanes(),
-    );
-    Point2::from_lanes(by_halves(
-        x,
-        #[inline(always)]
-        |(w, a, b, c, n)| BilinearTriangle::new(a, b, c, n).inverse(w),
-    ))
+    halved!(inverse BilinearTriangle::new(a, b, c, n) at w)
 }
 
 /// A rectangle set up for cosine-weighted sampling at one shading point: [`SphericalRectangle`]
@@ -537,19 +503,7 @@ pub fn bilinear_rectangle<P: Point2<Lane = L>, L: Math>(
     ey: P::Vec3,
     n: P::Vec3,
 ) -> (P::Vec3, L) {
-    let x = (
-        u.to_lanes(),
-        corner.to_lanes(),
-        ex.to_lanes(),
-        ey.to_lanes(),
-        n.to_lanes(),
-    );
-    let (w, pdf) = by_halves(
-        x,
-        #[inline(always)]
-        |(u, corner, ex, ey, n)| BilinearRectangle::new(corner, ex, ey, n).sample(u),
-    );
-    (Point3::from_lanes(w), pdf)
+    halved!(sample BilinearRectangle::new(corner, ex, ey, n) at u)
 }
 
 /// pdf per steradian that [`bilinear_rectangle`] returns a point in direction `p` (any positive
@@ -567,18 +521,7 @@ pub fn bilinear_rectangle_pdf<P: Point3<Lane = L>, L: Math>(
     ey: P,
     n: P,
 ) -> L {
-    let x = (
-        p.to_lanes(),
-        corner.to_lanes(),
-        ex.to_lanes(),
-        ey.to_lanes(),
-        n.to_lanes(),
-    );
-    by_halves(
-        x,
-        #[inline(always)]
-        |(p, corner, ex, ey, n)| BilinearRectangle::new(corner, ex, ey, n).pdf(p),
-    )
+    halved!(pdf BilinearRectangle::new(corner, ex, ey, n) at p)
 }
 
 /// Inverse of [`bilinear_rectangle`]: [`bilinear_inverse`] of the spherical rectangle's inverse.
@@ -592,18 +535,7 @@ pub fn bilinear_rectangle_inverse<P: Point3<Lane = L>, L: Math>(
     ey: P,
     n: P,
 ) -> P::Vec2 {
-    let x = (
-        p.to_lanes(),
-        corner.to_lanes(),
-        ex.to_lanes(),
-        ey.to_lanes(),
-        n.to_lanes(),
-    );
-    Point2::from_lanes(by_halves(
-        x,
-        #[inline(always)]
-        |(p, corner, ex, ey, n)| BilinearRectangle::new(corner, ex, ey, n).inverse(p),
-    ))
+    halved!(inverse BilinearRectangle::new(corner, ex, ey, n) at p)
 }
 
 /// The registry's [`bilinear_triangle`] towards vertices `v` for the receiver's normal `n`.

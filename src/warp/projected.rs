@@ -35,7 +35,7 @@ use glam::Vec3;
 use crate::frame::Frame;
 use crate::lane::{Lane, Lanes, Mask, V2, V3, Widen, zip_map};
 use crate::math::Math;
-use crate::point::{Point2, Point3, by_halves};
+use crate::point::{Point2, Point3, halved};
 use crate::warp::common::{clamp_u, pick};
 use crate::warp::family::{is_unit, lanes3};
 use crate::warp::polygon::{EdgePlanes, cross3_in, dot3_in, narrow3, unit_wide, widen3};
@@ -1338,19 +1338,7 @@ pub fn projected_triangle<P: Point2<Lane = L>, L: Math>(
     c: P::Vec3,
     n: P::Vec3,
 ) -> (P::Vec3, L) {
-    let x = (
-        u.to_lanes(),
-        a.to_lanes(),
-        b.to_lanes(),
-        c.to_lanes(),
-        n.to_lanes(),
-    );
-    let (w, pdf) = by_halves(
-        x,
-        #[inline(always)]
-        |(u, a, b, c, n)| ProjectedTriangle::new(a, b, c, n).sample(u),
-    );
-    (Point3::from_lanes(w), pdf)
+    halved!(sample ProjectedTriangle::new(a, b, c, n) at u)
 }
 
 /// pdf per steradian that [`projected_triangle`] returns direction `w` (any positive multiple):
@@ -1359,18 +1347,7 @@ pub fn projected_triangle<P: Point2<Lane = L>, L: Math>(
 /// sampled by solid angle.
 #[inline]
 pub fn projected_triangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P, c: P, n: P) -> L {
-    let x = (
-        w.to_lanes(),
-        a.to_lanes(),
-        b.to_lanes(),
-        c.to_lanes(),
-        n.to_lanes(),
-    );
-    by_halves(
-        x,
-        #[inline(always)]
-        |(w, a, b, c, n)| ProjectedTriangle::new(a, b, c, n).pdf(w),
-    )
+    halved!(pdf ProjectedTriangle::new(a, b, c, n) at w)
 }
 
 /// Inverse of [`projected_triangle`]: the u that maps to direction `w`, clamped to the square.
@@ -1383,18 +1360,7 @@ pub fn projected_triangle_inverse<P: Point3<Lane = L>, L: Math>(
     c: P,
     n: P,
 ) -> P::Vec2 {
-    let x = (
-        w.to_lanes(),
-        a.to_lanes(),
-        b.to_lanes(),
-        c.to_lanes(),
-        n.to_lanes(),
-    );
-    Point2::from_lanes(by_halves(
-        x,
-        #[inline(always)]
-        |(w, a, b, c, n)| ProjectedTriangle::new(a, b, c, n).inverse(w),
-    ))
+    halved!(inverse ProjectedTriangle::new(a, b, c, n) at w)
 }
 
 /// The registry's [`projected_triangle`] towards vertices `v` for the receiver's normal `n`.
@@ -1487,19 +1453,7 @@ pub fn projected_rectangle<P: Point2<Lane = L>, L: Math>(
     ey: P::Vec3,
     n: P::Vec3,
 ) -> (P::Vec3, L) {
-    let x = (
-        u.to_lanes(),
-        corner.to_lanes(),
-        ex.to_lanes(),
-        ey.to_lanes(),
-        n.to_lanes(),
-    );
-    let (w, pdf) = by_halves(
-        x,
-        #[inline(always)]
-        |(u, corner, ex, ey, n)| ProjectedRectangle::new(corner, ex, ey, n).sample(u),
-    );
-    (Point3::from_lanes(w), pdf)
+    halved!(sample ProjectedRectangle::new(corner, ex, ey, n) at u)
 }
 
 /// pdf per steradian that [`projected_rectangle`] returns direction `w` (any positive
@@ -1513,18 +1467,7 @@ pub fn projected_rectangle_pdf<P: Point3<Lane = L>, L: Math>(
     ey: P,
     n: P,
 ) -> L {
-    let x = (
-        w.to_lanes(),
-        corner.to_lanes(),
-        ex.to_lanes(),
-        ey.to_lanes(),
-        n.to_lanes(),
-    );
-    by_halves(
-        x,
-        #[inline(always)]
-        |(w, corner, ex, ey, n)| ProjectedRectangle::new(corner, ex, ey, n).pdf(w),
-    )
+    halved!(pdf ProjectedRectangle::new(corner, ex, ey, n) at w)
 }
 
 /// Inverse of [`projected_rectangle`]: the u that maps to direction `w`, clamped to the
@@ -1538,18 +1481,7 @@ pub fn projected_rectangle_inverse<P: Point3<Lane = L>, L: Math>(
     ey: P,
     n: P,
 ) -> P::Vec2 {
-    let x = (
-        w.to_lanes(),
-        corner.to_lanes(),
-        ex.to_lanes(),
-        ey.to_lanes(),
-        n.to_lanes(),
-    );
-    Point2::from_lanes(by_halves(
-        x,
-        #[inline(always)]
-        |(w, corner, ex, ey, n)| ProjectedRectangle::new(corner, ex, ey, n).inverse(w),
-    ))
+    halved!(inverse ProjectedRectangle::new(corner, ex, ey, n) at w)
 }
 
 /// The registry's [`projected_rectangle`] towards corner + s·ex + t·ey (`v` is corner, ex, ey)

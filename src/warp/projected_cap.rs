@@ -47,7 +47,7 @@ use glam::Vec3;
 use crate::frame::Frame;
 use crate::lane::{Lane, Lanes, Mask, V2, V3, Widen};
 use crate::math::Math;
-use crate::point::{Point2, Point3, by_halves};
+use crate::point::{Point2, Point3, halved};
 use crate::warp::common::{azimuth_fraction, clamp_u, pick};
 use crate::warp::family::{is_unit, lane, lanes3};
 use crate::warp::polygon::{cross3_in, dot3_in, widen3};
@@ -633,13 +633,7 @@ pub fn projected_cap<P: Point2<Lane = L>, L: Math>(
     radius: L,
     n: P::Vec3,
 ) -> (P::Vec3, L) {
-    let x = (u.to_lanes(), center.to_lanes(), radius, n.to_lanes());
-    let (w, pdf) = by_halves(
-        x,
-        #[inline(always)]
-        |(u, center, radius, n)| ProjectedCap::new(center, radius, n).sample(u),
-    );
-    (Point3::from_lanes(w), pdf)
+    halved!(sample ProjectedCap::new(center, radius: lane, n) at u)
 }
 
 /// pdf per steradian that [`projected_cap`] returns direction `w` (any positive multiple):
@@ -648,12 +642,7 @@ pub fn projected_cap<P: Point2<Lane = L>, L: Math>(
 /// nothing to sample); the cone's 1/(2π(1 − cos α)) on the cap where it falls back.
 #[inline]
 pub fn projected_cap_pdf<P: Point3<Lane = L>, L: Math>(w: P, center: P, radius: L, n: P) -> L {
-    let x = (w.to_lanes(), center.to_lanes(), radius, n.to_lanes());
-    by_halves(
-        x,
-        #[inline(always)]
-        |(w, center, radius, n)| ProjectedCap::new(center, radius, n).pdf(w),
-    )
+    halved!(pdf ProjectedCap::new(center, radius: lane, n) at w)
 }
 
 /// Inverse of [`projected_cap`]: the u that maps to direction `w` (any positive multiple),
@@ -665,12 +654,7 @@ pub fn projected_cap_inverse<P: Point3<Lane = L>, L: Math>(
     radius: L,
     n: P,
 ) -> P::Vec2 {
-    let x = (w.to_lanes(), center.to_lanes(), radius, n.to_lanes());
-    Point2::from_lanes(by_halves(
-        x,
-        #[inline(always)]
-        |(w, center, radius, n)| ProjectedCap::new(center, radius, n).inverse(w),
-    ))
+    halved!(inverse ProjectedCap::new(center, radius: lane, n) at w)
 }
 
 /// The registry's [`projected_cap`]: the sphere about `c` of radius `r`, for the receiver's

@@ -60,7 +60,7 @@ use glam::Vec3;
 use crate::frame::Frame;
 use crate::lane::{Lane, Lanes, Mask, V2, V3, Widen};
 use crate::math::Math;
-use crate::point::{Point2, Point3, by_halves};
+use crate::point::{Point2, Point3, halved};
 use crate::warp::common::{clamp_u, pick};
 use crate::warp::disk::concentric_with_one_minus_r;
 use crate::warp::family::{is_unit, lane, lanes3};
@@ -780,13 +780,7 @@ pub fn spherical_ellipse<P: Point2<Lane = L>, L: Math>(
     normal: P::Vec3,
     radius: L,
 ) -> (P::Vec3, L) {
-    let x = (u.to_lanes(), center.to_lanes(), normal.to_lanes(), radius);
-    let (w, pdf) = by_halves(
-        x,
-        #[inline(always)]
-        |(u, center, normal, radius)| SphericalEllipse::new(center, normal, radius).sample(u),
-    );
-    (Point3::from_lanes(w), pdf)
+    halved!(sample SphericalEllipse::new(center, normal, radius: lane) at u)
 }
 
 /// pdf per steradian that [`spherical_ellipse`] returns direction `w` (any positive multiple):
@@ -800,12 +794,7 @@ pub fn spherical_ellipse_pdf<P: Point3<Lane = L>, L: Math>(
     normal: P,
     radius: L,
 ) -> L {
-    let x = (w.to_lanes(), center.to_lanes(), normal.to_lanes(), radius);
-    by_halves(
-        x,
-        #[inline(always)]
-        |(w, center, normal, radius)| SphericalEllipse::for_pdf(center, normal, radius).pdf(w),
-    )
+    halved!(pdf SphericalEllipse::for_pdf(center, normal, radius: lane) at w)
 }
 
 /// Inverse of [`spherical_ellipse`]: the u that maps to direction `w` (any positive multiple),
@@ -817,12 +806,7 @@ pub fn spherical_ellipse_inverse<P: Point3<Lane = L>, L: Math>(
     normal: P,
     radius: L,
 ) -> P::Vec2 {
-    let x = (w.to_lanes(), center.to_lanes(), normal.to_lanes(), radius);
-    Point2::from_lanes(by_halves(
-        x,
-        #[inline(always)]
-        |(w, center, normal, radius)| SphericalEllipse::new(center, normal, radius).inverse(w),
-    ))
+    halved!(inverse SphericalEllipse::new(center, normal, radius: lane) at w)
 }
 
 /// The registry's [`spherical_ellipse`]: the disk about `c` with normal `n` and radius `r`.

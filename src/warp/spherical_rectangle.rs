@@ -17,7 +17,7 @@ use core::marker::PhantomData;
 
 use crate::lane::{Lane, Mask, V2, V3};
 use crate::math::Math;
-use crate::point::{Point2, Point3, by_halves};
+use crate::point::{Point2, Point3, halved};
 use crate::warp::common::clamp_u;
 use crate::warp::polygon::{cross_wide, dot_wide, plane_dot};
 use crate::warp::polygon::{parallelogram_area_pdf, pow2_scale};
@@ -805,18 +805,7 @@ pub fn spherical_rectangle<P: Point2<Lane = L>, L: Math>(
     ex: P::Vec3,
     ey: P::Vec3,
 ) -> (P::Vec3, L) {
-    let x = (
-        u.to_lanes(),
-        corner.to_lanes(),
-        ex.to_lanes(),
-        ey.to_lanes(),
-    );
-    let (w, pdf) = by_halves(
-        x,
-        #[inline(always)]
-        |(u, corner, ex, ey)| SphericalRectangle::new(corner, ex, ey).sample(u),
-    );
-    (Point3::from_lanes(w), pdf)
+    halved!(sample SphericalRectangle::new(corner, ex, ey) at u)
 }
 
 /// pdf per steradian that [`spherical_rectangle`] returns a point in direction `w` (any positive
@@ -829,17 +818,7 @@ pub fn spherical_rectangle<P: Point2<Lane = L>, L: Math>(
 /// f32 rounding of the sample point.
 #[inline]
 pub fn spherical_rectangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, corner: P, ex: P, ey: P) -> L {
-    let x = (
-        w.to_lanes(),
-        corner.to_lanes(),
-        ex.to_lanes(),
-        ey.to_lanes(),
-    );
-    by_halves(
-        x,
-        #[inline(always)]
-        |(w, corner, ex, ey)| SphericalRectangle::new(corner, ex, ey).pdf(w),
-    )
+    halved!(pdf SphericalRectangle::new(corner, ex, ey) at w)
 }
 
 /// Inverse of [`spherical_rectangle`]: the u that maps to point `p` of the rectangle, in
@@ -857,15 +836,5 @@ pub fn spherical_rectangle_inverse<P: Point3<Lane = L>, L: Math>(
     ex: P,
     ey: P,
 ) -> P::Vec2 {
-    let x = (
-        p.to_lanes(),
-        corner.to_lanes(),
-        ex.to_lanes(),
-        ey.to_lanes(),
-    );
-    Point2::from_lanes(by_halves(
-        x,
-        #[inline(always)]
-        |(p, corner, ex, ey)| SphericalRectangle::new(corner, ex, ey).inverse(p),
-    ))
+    halved!(inverse SphericalRectangle::new(corner, ex, ey) at p)
 }

@@ -8,7 +8,7 @@ use core::marker::PhantomData;
 
 use crate::lane::{Mask, V2, V3};
 use crate::math::Math;
-use crate::point::{Point2, Point3, by_halves};
+use crate::point::{Point2, Point3, halved};
 use crate::warp::common::clamp_u;
 use crate::warp::polygon::{
     EdgePlanes, needs_pow2_scale, pow2_scale, triangle_area_pdf, vos_solid_angle,
@@ -487,13 +487,7 @@ pub fn spherical_triangle<P: Point2<Lane = L>, L: Math>(
     b: P::Vec3,
     c: P::Vec3,
 ) -> (P::Vec3, L) {
-    let x = (u.to_lanes(), a.to_lanes(), b.to_lanes(), c.to_lanes());
-    let (w, pdf) = by_halves(
-        x,
-        #[inline(always)]
-        |(u, a, b, c)| SphericalTriangle::new(a, b, c).sample(u),
-    );
-    (Point3::from_lanes(w), pdf)
+    halved!(sample SphericalTriangle::new(a, b, c) at u)
 }
 
 /// pdf per steradian that [`spherical_triangle`] returns unit direction `w`: 1/Ω, or the
@@ -502,12 +496,7 @@ pub fn spherical_triangle<P: Point2<Lane = L>, L: Math>(
 /// rounding of the map, so that every sample keeps its pdf.
 #[inline]
 pub fn spherical_triangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P, c: P) -> L {
-    let x = (w.to_lanes(), a.to_lanes(), b.to_lanes(), c.to_lanes());
-    by_halves(
-        x,
-        #[inline(always)]
-        |(w, a, b, c)| SphericalTriangle::new(a, b, c).pdf(w),
-    )
+    halved!(pdf SphericalTriangle::new(a, b, c) at w)
 }
 
 /// Inverse of [`spherical_triangle`]: the u that maps to unit direction `w`, clamped to [0, 1]².
@@ -517,10 +506,5 @@ pub fn spherical_triangle_pdf<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P, c:
 /// low-distortion triangle inverse of w's barycentrics. NaN gives NaN.
 #[inline]
 pub fn spherical_triangle_inverse<P: Point3<Lane = L>, L: Math>(w: P, a: P, b: P, c: P) -> P::Vec2 {
-    let x = (w.to_lanes(), a.to_lanes(), b.to_lanes(), c.to_lanes());
-    Point2::from_lanes(by_halves(
-        x,
-        #[inline(always)]
-        |(w, a, b, c)| SphericalTriangle::new(a, b, c).inverse(w),
-    ))
+    halved!(inverse SphericalTriangle::new(a, b, c) at w)
 }

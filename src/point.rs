@@ -147,16 +147,17 @@ impl<L: Math> Point3 for V3<L> {
 }
 
 /// A value of one width as two values of half its width, where the build runs the width as two
-/// halves, or as itself: the lanes ([`Math::Half`]), [`V2`], [`V3`], arrays and tuples of them.
+/// halves, or as itself: the lanes ([`Math::Half`]), [`V2`], [`V3`], arrays and tuples of them,
+/// and the crate's structs of them (`split_fields!`).
 ///
 /// Without AVX-512, `wide` runs each [`F32x16`](crate::x16::F32x16) operation as two eight-wide
 /// ones, so a long algorithm at width 16 holds every intermediate in twice the registers of width
-/// 8 and spills: the spherical triangle took 1.4× the time per sample of its eight-wide form,
+/// 8 and spills: the spherical triangle takes 1.4× the time per sample of its eight-wide form,
 /// the bilinear rectangle 1.8×. The long algorithms (the free functions of the spherical,
 /// bilinear and projected polygons, the projected cap and the spherical ellipse; a light's
 /// queries at a point; the Phong BSDF) therefore run a sixteen-wide call as two eight-wide
-/// calls there (`by_halves`, or a branch on [`Math::SPLIT`] at the top). Lane *i* is the scalar
-/// computation on lane *i*'s inputs either way.
+/// calls there, through `by_halves`. Lane *i* is the scalar computation on lane *i*'s inputs
+/// either way.
 pub trait Split: Copy {
     /// The type of a half: `Self` where the width runs whole.
     type Half: Copy;
@@ -164,6 +165,11 @@ pub trait Split: Copy {
     const SPLIT: bool;
     /// The two halves, lanes 0..w/2 and w/2..w; where the width runs whole, `self` twice.
     fn halves(self) -> (Self::Half, Self::Half);
+}
+
+/// A [`Split`] value that can be put together again from its halves: what a split call returns.
+/// (An argument need only split: a light of one kind in all its lanes has no join of two kinds.)
+pub trait Join: Split {
     /// The value whose halves are `lo` and `hi`; where the width runs whole, `lo`.
     fn join(lo: Self::Half, hi: Self::Half) -> Self;
 }
@@ -171,12 +177,14 @@ pub trait Split: Copy {
 /// `f(x)`, or, where `x`'s width runs as two halves, `f` of each half, joined. The long
 /// algorithms' public entries call it once, at the top; the short warps gain nothing from it.
 ///
-/// Callers mark `f` `#[inline(always)]`. Left to LLVM, a closure called from the x8 path and
-/// twice from the x16 one was kept out of line, and the spherical triangle's x8 form then built
-/// its set-up in one place and copied it to another (two more `memcpy` a sample, 8 % more
-/// instructions, 12 % more time).
+/// Callers mark `f` `#[inline(always)]`, and `f` calls a whole-width body, never the public
+/// entry itself. A closure left to LLVM, with one call from the x8 path and two from the x16
+/// one, may stay out of line, and the x8 spherical triangle then builds its set-up in one place
+/// and copies it to another (two more `memcpy` a sample, 8 % more instructions, 12 % more
+/// time); a public entry calling itself in the dead branch of its x8 instance doubles Phong's
+/// x8 time.
 #[inline(always)]
-pub(crate) fn by_halves<I: Split, O: Split>(x: I, f: impl Fn(I::Half) -> O::Half) -> O {
+pub(crate) fn by_halves<I: Split, O: Join>(x: I, f: impl Fn(I::Half) -> O::Half) -> O {
     let (lo, hi) = x.halves();
     let lo = f(lo);
     // Where the width runs whole, `hi` is `lo` again, and the second call is never made.
@@ -212,6 +220,43 @@ macro_rules! halved {
 }
 pub(crate) use halved;
 
+/// [`Split`] and [`Join`] for a struct generic over its point type `V: Point3`, field by field:
+/// `split_fields!(Phong { kd: point, ks: point, n })`. A field marked `point` is a `V`, one marked
+/// `points` an array of them; the others are [`Join`] themselves.
+macro_rules! split_fields {
+    (@halves $x:expr) => { $crate::point::Split::halves($x) };
+    (@halves $x:expr, point) => { $crate::point::halves3($x) };
+    (@halves $x:expr, points) => {{
+        let h = $x.map($crate::point::halves3);
+        (h.map(|h| h.0), h.map(|h| h.1))
+    }};
+    (@join $lo:expr, $hi:expr) => { $crate::point::Join::join($lo, $hi) };
+    (@join $lo:expr, $hi:expr, point) => { $crate::point::join3($lo, $hi) };
+    (@join $lo:expr, $hi:expr, points) => {{
+        let mut hi = $hi.into_iter();
+        // `hi` has as many elements as `lo`, so the fallback is never taken.
+        $lo.map(|l| $crate::point::join3(l, hi.next().unwrap_or(l)))
+    }};
+    ($t:ident { $($f:ident $(: $k:ident)?),* $(,)? }) => {
+        impl<V: $crate::point::Point3> $crate::point::Split for $t<V> {
+            type Half = $t<V::Half>;
+            const SPLIT: bool = <V::Lane as $crate::math::Math>::SPLIT;
+            #[inline(always)]
+            fn halves(self) -> (Self::Half, Self::Half) {
+                $(let $f = $crate::point::split_fields!(@halves self.$f $(, $k)?);)*
+                ($t { $($f: $f.0),* }, $t { $($f: $f.1),* })
+            }
+        }
+        impl<V: $crate::point::Point3> $crate::point::Join for $t<V> {
+            #[inline(always)]
+            fn join(lo: Self::Half, hi: Self::Half) -> Self {
+                $t { $($f: $crate::point::split_fields!(@join lo.$f, hi.$f $(, $k)?)),* }
+            }
+        }
+    };
+}
+pub(crate) use split_fields;
+
 impl<L: Math> Split for L {
     type Half = L::Half;
     const SPLIT: bool = L::SPLIT;
@@ -219,6 +264,9 @@ impl<L: Math> Split for L {
     fn halves(self) -> (L::Half, L::Half) {
         Math::halves(self)
     }
+}
+
+impl<L: Math> Join for L {
     #[inline(always)]
     fn join(lo: L::Half, hi: L::Half) -> L {
         Math::join(lo, hi)
@@ -233,6 +281,9 @@ impl<L: Math> Split for V2<L> {
         let ((x0, x1), (y0, y1)) = (self.x.halves(), self.y.halves());
         (V2::new(x0, y0), V2::new(x1, y1))
     }
+}
+
+impl<L: Math> Join for V2<L> {
     #[inline(always)]
     fn join(lo: Self::Half, hi: Self::Half) -> Self {
         V2::new(L::join(lo.x, hi.x), L::join(lo.y, hi.y))
@@ -247,6 +298,9 @@ impl<L: Math> Split for V3<L> {
         let ((x0, x1), (y0, y1), (z0, z1)) = (self.x.halves(), self.y.halves(), self.z.halves());
         (V3::new(x0, y0, z0), V3::new(x1, y1, z1))
     }
+}
+
+impl<L: Math> Join for V3<L> {
     #[inline(always)]
     fn join(lo: Self::Half, hi: Self::Half) -> Self {
         V3::new(
@@ -264,6 +318,9 @@ impl<T: Split, const N: usize> Split for [T; N] {
     fn halves(self) -> (Self::Half, Self::Half) {
         (self.map(|t| t.halves().0), self.map(|t| t.halves().1))
     }
+}
+
+impl<T: Join, const N: usize> Join for [T; N] {
     #[inline(always)]
     fn join(lo: Self::Half, hi: Self::Half) -> Self {
         let mut hi = hi.into_iter();
@@ -283,6 +340,8 @@ macro_rules! tuples {
                 let parts = ($(self.$i.halves(),)+);
                 (($(parts.$i.0,)+), ($(parts.$i.1,)+))
             }
+        }
+        impl<$($t: Join),+> Join for ($($t,)+) {
             #[inline(always)]
             fn join(lo: Self::Half, hi: Self::Half) -> Self {
                 ($($t::join(lo.$i, hi.$i),)+)

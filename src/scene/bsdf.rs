@@ -14,7 +14,7 @@ use glam::Vec3;
 use crate::frame::Frame;
 use crate::lane::{V2, V3};
 use crate::math::Math;
-use crate::point::{Point2, Point3, halves2, halves3, join3};
+use crate::point::{Point2, Point3, by_halves, split_fields};
 use crate::warp::dot_wide;
 use crate::warp::{
     ONE_MINUS_EPS, cosine_hemisphere, cosine_hemisphere_pdf, phong_lobe, phong_lobe_density,
@@ -30,6 +30,12 @@ pub struct BsdfSample<V: Point3> {
     /// `pdf(wo, wi)`, bit for bit; 0 means "drop the sample".
     pub pdf: V::Lane,
 }
+
+split_fields!(BsdfSample {
+    wi: point,
+    f: point,
+    pdf
+});
 
 /// The Lambertian BSDF f = ρ/π (RGB albedo ρ), sampled by the cosine hemisphere (Malley's
 /// method): pdf cos θ/π, so f·cos θ/pdf = ρ exactly.
@@ -93,6 +99,14 @@ pub struct Phong<V: Point3 = Vec3> {
     pub n: V::Lane,
 }
 
+// Sixteen lanes without AVX-512 run as two calls of eight (`point::Split`): the lobe's logarithm
+// and exponential spill at width 16.
+split_fields!(Phong {
+    kd: point,
+    ks: point,
+    n
+});
+
 impl<V: Point3<Lane = L>, L: Math> Phong<V> {
     /// The modified Phong BSDF with reflectances `kd`, `ks` and exponent `n`.
     #[inline]
@@ -109,31 +123,21 @@ impl<V: Point3<Lane = L>, L: Math> Phong<V> {
         L::select(p.ge(L::ZERO) & p.le(L::ONE), p, L::ONE)
     }
 
-    /// The BSDF as its two halves ([`Split`](crate::point::Split)): sixteen lanes without
-    /// AVX-512 run as two calls of eight, since the lobe's logarithm and exponential spill at
-    /// width 16.
-    #[inline(always)]
-    fn halves(&self) -> (Phong<V::Half>, Phong<V::Half>) {
-        let ((kd0, kd1), (ks0, ks1), (n0, n1)) =
-            (halves3(self.kd), halves3(self.ks), self.n.halves());
-        (Phong::new(kd0, ks0, n0), Phong::new(kd1, ks1, n1))
-    }
-
     /// f(wo, wi) where both directions are above the horizon, else 0.
     #[inline]
     pub fn eval(&self, wo: V, wi: V) -> V {
-        if L::SPLIT {
-            let ((lo, hi), (o0, o1), (i0, i1)) = (self.halves(), halves3(wo), halves3(wi));
-            return join3(lo.eval_whole(o0, i0), hi.eval_whole(o1, i1));
-        }
-        self.eval_whole(wo, wi)
+        let f = by_halves(
+            (*self, wo.to_lanes(), wi.to_lanes()),
+            #[inline(always)]
+            |(bsdf, wo, wi)| bsdf.eval_whole(wo, wi),
+        );
+        V::from_lanes(f)
     }
 
     /// [`eval`](Self::eval) at the whole width.
     #[inline(always)]
-    fn eval_whole(&self, wo: V, wi: V) -> V {
-        let (wo, wi) = (wo.to_lanes(), wi.to_lanes());
-        V::from_lanes(self.eval_with(wo, wi, lobe_pdf(wo, wi, self.n)))
+    fn eval_whole(&self, wo: V3<L>, wi: V3<L>) -> V3<L> {
+        self.eval_with(wo, wi, lobe_pdf(wo, wi, self.n))
     }
 
     /// f from the lobe's density at (wo, wi), which `sample` shares with its pdf: it is most of
@@ -156,22 +160,16 @@ impl<V: Point3<Lane = L>, L: Math> Phong<V> {
     /// [0, 1]²; NaN gives pdf 0.
     #[inline]
     pub fn sample(&self, wo: V, u: V::Vec2) -> BsdfSample<V> {
-        if L::SPLIT {
-            let ((lo, hi), (o0, o1), (u0, u1)) = (self.halves(), halves3(wo), halves2::<V>(u));
-            let (s0, s1) = (lo.sample_whole(o0, u0), hi.sample_whole(o1, u1));
-            return BsdfSample {
-                wi: join3(s0.wi, s1.wi),
-                f: join3(s0.f, s1.f),
-                pdf: L::join(s0.pdf, s1.pdf),
-            };
-        }
-        self.sample_whole(wo, u)
+        by_halves(
+            (*self, wo.to_lanes(), u.to_lanes()),
+            #[inline(always)]
+            |(bsdf, wo, u)| bsdf.sample_whole(wo, u),
+        )
     }
 
     /// [`sample`](Self::sample) at the whole width.
     #[inline(always)]
-    fn sample_whole(&self, wo: V, u: V::Vec2) -> BsdfSample<V> {
-        let (wo_l, u) = (wo.to_lanes(), u.to_lanes());
+    fn sample_whole(&self, wo_l: V3<L>, u: V2<L>) -> BsdfSample<V> {
         let p = self.diffuse_probability();
         let u0 = u.x.clamp(L::ZERO, L::c(ONE_MINUS_EPS as f64));
         let diffuse = u0.lt(p);
@@ -195,18 +193,11 @@ impl<V: Point3<Lane = L>, L: Math> Phong<V> {
     /// The mixture pdf of `sample` at `wi`; 0 for NaN.
     #[inline]
     pub fn pdf(&self, wo: V, wi: V) -> L {
-        if L::SPLIT {
-            let ((lo, hi), (o0, o1), (i0, i1)) = (self.halves(), halves3(wo), halves3(wi));
-            return L::join(lo.pdf_whole(o0, i0), hi.pdf_whole(o1, i1));
-        }
-        self.pdf_whole(wo, wi)
-    }
-
-    /// [`pdf`](Self::pdf) at the whole width.
-    #[inline(always)]
-    fn pdf_whole(&self, wo: V, wi: V) -> L {
-        let (wo, wi) = (wo.to_lanes(), wi.to_lanes());
-        self.pdf_with(wo, wi, lobe_pdf(wo, wi, self.n))
+        by_halves(
+            (*self, wo.to_lanes(), wi.to_lanes()),
+            #[inline(always)]
+            |(bsdf, wo, wi)| bsdf.pdf_with(wo, wi, lobe_pdf(wo, wi, bsdf.n)),
+        )
     }
 
     /// The mixture pdf from the lobe's density at (wo, wi).

@@ -13,7 +13,7 @@ use super::shape::{
 use crate::frame::Frame;
 use crate::lane::{Lane, Mask, V2, V3};
 use crate::math::Math;
-use crate::point::{Point2, Point3, halves3};
+use crate::point::{Point2, Point3, Split, split_fields};
 use crate::warp::dot_wide;
 use crate::warp::{SphericalEllipse, concentric_disk};
 
@@ -44,6 +44,12 @@ pub struct Disk<V: Point3 = Vec3> {
     /// The radius.
     pub radius: V::Lane,
 }
+
+split_fields!(Disk {
+    center: point,
+    normal: point,
+    radius
+});
 
 /// A disk light: a [`Disk`] emitting on the side of its normal.
 pub type DiskLight<V = Vec3> = Emitter<Disk<V>, V>;
@@ -98,20 +104,7 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Disk<V> {
 
     #[inline(always)]
     fn halves(&self) -> (Disk<V::Half>, Disk<V::Half>) {
-        let (c, n) = (halves3(self.center), halves3(self.normal));
-        let r = self.radius.halves();
-        (
-            Disk {
-                center: c.0,
-                normal: n.0,
-                radius: r.0,
-            },
-            Disk {
-                center: c.1,
-                normal: n.1,
-                radius: r.1,
-            },
-        )
+        Split::halves(*self)
     }
 
     #[inline(always)]

@@ -10,7 +10,7 @@ use super::luminance;
 use super::shape::{AtPoint, LightSampling, PreparedShape, Shape};
 use crate::lane::V3;
 use crate::math::Math;
-use crate::point::{Point3, halves2, halves3, join3};
+use crate::point::{Point3, Split, by_halves, halves2, halves3, split_fields};
 
 /// A light: the shape `S` emitting radiance `le` (RGB) on the side it faces (outwards for the
 /// sphere, the normal's side for planar shapes), 0 behind. [`SphereLight`](super::SphereLight),
@@ -25,8 +25,18 @@ pub struct Emitter<S, V: Point3 = Vec3> {
     pub le: V,
 }
 
-/// An [`Emitter`] at the width its long queries run at ([`Shape::halves`]).
-type HalfEmitter<S, V> = Emitter<<S as Shape<V>>::Half, <V as Point3>::Half>;
+impl<S: Shape<V>, V: Point3> Split for Emitter<S, V> {
+    type Half = Emitter<S::Half, V::Half>;
+    const SPLIT: bool = <V::Lane as Math>::SPLIT;
+    #[inline(always)]
+    fn halves(self) -> (Self::Half, Self::Half) {
+        let ((s0, s1), (le0, le1)) = (self.shape.halves(), halves3(self.le));
+        (
+            Emitter { shape: s0, le: le0 },
+            Emitter { shape: s1, le: le1 },
+        )
+    }
+}
 
 /// An [`Emitter`] prepared at one shading point: [`Emitter::at`].
 #[derive(Clone, Copy)]
@@ -51,6 +61,13 @@ pub struct LightSample<V: Point3> {
     /// round trip); 0 means "drop the sample".
     pub pdf: V::Lane,
 }
+
+split_fields!(LightSample {
+    wi: point,
+    dist,
+    le: point,
+    pdf
+});
 
 /// A point on a light, drawn uniformly by area, from `sample_area`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -98,59 +115,36 @@ impl<S: Shape<V>, V: Point3<Lane = L>, L: Math> Emitter<S, V> {
     /// [`PreparedEmitter::sample`] at shading point `p`.
     #[inline]
     pub fn sample(&self, p: V, u: V::Vec2) -> LightSample<V> {
-        // Sixteen lanes without AVX-512 as two calls of eight, as the long warps run
-        // (`point::Split`): a light's set-up at width 16 spills.
-        if L::SPLIT {
-            let ((lo, hi), (p0, p1), (u0, u1)) = (self.halves(), halves3(p), halves2::<V>(u));
-            let (s0, s1) = (
-                lo.once_at(p0, Query::Sample(u0)),
-                hi.once_at(p1, Query::Sample(u1)),
-            );
-            return LightSample::join(s0, s1);
-        }
         self.once_at(p, Query::Sample(u))
     }
 
     /// The pdf per steradian of `sample` at `p` in unit direction `wi`.
     #[inline]
     pub fn pdf(&self, p: V, wi: V) -> L {
-        if L::SPLIT {
-            let ((lo, hi), (p0, p1), (w0, w1)) = (self.halves(), halves3(p), halves3(wi));
-            return L::join(
-                lo.once_at(p0, Query::Pdf(w0)).pdf,
-                hi.once_at(p1, Query::Pdf(w1)).pdf,
-            );
-        }
         self.once_at(p, Query::Pdf(wi)).pdf
     }
 
     /// The distance from `p` along unit `wi` to the light, ∞ for a miss.
     #[inline]
     pub fn hit(&self, p: V, wi: V) -> L {
-        if L::SPLIT {
-            let ((lo, hi), (p0, p1), (w0, w1)) = (self.halves(), halves3(p), halves3(wi));
-            return L::join(
-                lo.once_at(p0, Query::Hit(w0)).dist,
-                hi.once_at(p1, Query::Hit(w1)).dist,
-            );
-        }
         self.once_at(p, Query::Hit(wi)).dist
     }
 
-    /// The light as its two halves ([`Shape::halves`]).
+    /// One query of the light prepared at `p` (no normal, by solid angle), the prepared shape
+    /// kept where it is built ([`Shape::with_at`]); sixteen lanes without AVX-512 as two calls
+    /// of eight ([`Split`]), since a light's set-up at width 16 spills.
     #[inline(always)]
-    fn halves(&self) -> (HalfEmitter<S, V>, HalfEmitter<S, V>) {
-        let ((s0, s1), (le0, le1)) = (self.shape.halves(), halves3(self.le));
-        (
-            Emitter { shape: s0, le: le0 },
-            Emitter { shape: s1, le: le1 },
+    fn once_at(&self, p: V, query: Query<V>) -> LightSample<V> {
+        by_halves(
+            (*self, p.to_lanes(), query),
+            #[inline(always)]
+            |(light, p, query)| light.whole_at(Point3::from_lanes(p), query),
         )
     }
 
-    /// One query of the light prepared at `p` (no normal, by solid angle), the prepared shape
-    /// kept where it is built ([`Shape::with_at`]).
+    /// [`once_at`](Self::once_at) at the whole width.
     #[inline(always)]
-    fn once_at(&self, p: V, query: Query<V>) -> LightSample<V> {
+    fn whole_at(&self, p: V, query: Query<V>) -> LightSample<V> {
         let zero = V::from_lanes(V3::all(L::ZERO));
         let work = Once {
             query,
@@ -255,6 +249,28 @@ enum Query<V: Point3> {
     Hit(V),
 }
 
+impl<V: Point3> Split for Query<V> {
+    type Half = Query<V::Half>;
+    const SPLIT: bool = <V::Lane as Math>::SPLIT;
+    #[inline(always)]
+    fn halves(self) -> (Query<V::Half>, Query<V::Half>) {
+        match self {
+            Query::Sample(u) => {
+                let (lo, hi) = halves2::<V>(u);
+                (Query::Sample(lo), Query::Sample(hi))
+            }
+            Query::Pdf(w) => {
+                let (lo, hi) = halves3(w);
+                (Query::Pdf(lo), Query::Pdf(hi))
+            }
+            Query::Hit(w) => {
+                let (lo, hi) = halves3(w);
+                (Query::Hit(lo), Query::Hit(hi))
+            }
+        }
+    }
+}
+
 /// A [`Query`] with the light's radiance, as work on the prepared shape.
 struct Once<V: Point3> {
     query: Query<V>,
@@ -299,17 +315,6 @@ fn le_towards<L: Math>(front: L::Mask, le: V3<L>) -> V3<L> {
 }
 
 impl<V: Point3<Lane = L>, L: Math> LightSample<V> {
-    /// The sample whose halves are `lo` and `hi` ([`Split`](crate::point::Split)).
-    #[inline(always)]
-    fn join(lo: LightSample<V::Half>, hi: LightSample<V::Half>) -> Self {
-        LightSample {
-            wi: join3(lo.wi, hi.wi),
-            dist: L::join(lo.dist, hi.dist),
-            le: join3(lo.le, hi.le),
-            pdf: L::join(lo.pdf, hi.pdf),
-        }
-    }
-
     /// The same sample with its pdf multiplied by a selection probability: what an estimator
     /// that chose the light at random must divide by.
     #[inline]

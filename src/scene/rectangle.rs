@@ -11,7 +11,7 @@ use super::shape::{
 };
 use crate::lane::V3;
 use crate::math::Math;
-use crate::point::{Point2, Point3, halves3};
+use crate::point::{Point2, Point3, Split, split_fields};
 use crate::warp::{
     BilinearRectangle, ProjectedRectangle, SphericalRectangle, plane_dot, wide_cross,
 };
@@ -46,6 +46,12 @@ pub struct Rectangle<V: Point3 = Vec3> {
     /// The second edge (orthogonal to the first for a rectangle).
     pub ey: V,
 }
+
+split_fields!(Rectangle {
+    corner: point,
+    ex: point,
+    ey: point
+});
 
 /// A parallelogram light: a [`Rectangle`] emitting on the side of its normal.
 pub type RectangleLight<V = Vec3> = Emitter<Rectangle<V>, V>;
@@ -101,19 +107,7 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Rectangle<V> {
 
     #[inline(always)]
     fn halves(&self) -> (Rectangle<V::Half>, Rectangle<V::Half>) {
-        let (c, x, y) = (halves3(self.corner), halves3(self.ex), halves3(self.ey));
-        (
-            Rectangle {
-                corner: c.0,
-                ex: x.0,
-                ey: y.0,
-            },
-            Rectangle {
-                corner: c.1,
-                ex: x.1,
-                ey: y.1,
-            },
-        )
+        Split::halves(*self)
     }
 
     #[inline(always)]

@@ -57,6 +57,7 @@ macro_rules! shapes {
         impl<V: Point3<Lane = L>, L: Math> Shape<V> for AnyShape<V> {
             type Prepared = AnyPrepared<V>;
             type Half = AnyShape<V::Half>;
+            // A shape of one kind in all its lanes: its halves are of that kind.
             #[inline(always)]
             fn halves(&self) -> (AnyShape<V::Half>, AnyShape<V::Half>) {
                 match self {

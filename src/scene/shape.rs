@@ -97,11 +97,11 @@ pub struct AreaPoint<V: Point3> {
 pub trait Shape<V: Point3>: Copy {
     /// The shape prepared at one shading point.
     type Prepared: PreparedShape<V>;
-    /// The shape at the width a long algorithm runs at ([`Split`](crate::point::Split)): the
-    /// same shape over [`Point3::Half`].
+    /// The shape at the width a light's long queries run at ([`Split`](crate::point::Split)):
+    /// the same shape over [`Point3::Half`].
     type Half: Shape<V::Half>;
     /// The shape as its two halves, lanes 0..w/2 and w/2..w (`self` twice where the width runs
-    /// whole).
+    /// whole): [`Split::halves`](crate::point::Split::halves).
     fn halves(&self) -> (Self::Half, Self::Half);
     /// The shape prepared at shading point `p`, with the shading normal `n` (the zero vector for
     /// none), to sample by `sampling` where the shape offers it and by its own sampler (solid

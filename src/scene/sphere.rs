@@ -10,7 +10,7 @@ use super::shape::{AreaPoint, LightSampling, PreparedShape, Shape, ShapeSample, 
 use crate::frame::Frame;
 use crate::lane::{Lane, Mask, V2, V3};
 use crate::math::Math;
-use crate::point::{Point2, Point3, halves3};
+use crate::point::{Point2, Point3, Split, split_fields};
 use crate::warp::{ProjectedCap, cone_h_from_sin2, uniform_cone, uniform_sphere};
 
 /// A sphere of radius `radius` about `center`; as a light ([`SphereLight`](super::SphereLight))
@@ -42,6 +42,11 @@ pub struct Sphere<V: Point3 = Vec3> {
     /// The radius.
     pub radius: V::Lane,
 }
+
+split_fields!(Sphere {
+    center: point,
+    radius
+});
 
 /// A sphere light: a [`Sphere`] emitting outwards.
 pub type SphereLight<V = Vec3> = Emitter<Sphere<V>, V>;
@@ -96,17 +101,7 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Sphere<V> {
 
     #[inline(always)]
     fn halves(&self) -> (Sphere<V::Half>, Sphere<V::Half>) {
-        let ((c0, c1), (r0, r1)) = (halves3(self.center), self.radius.halves());
-        (
-            Sphere {
-                center: c0,
-                radius: r0,
-            },
-            Sphere {
-                center: c1,
-                radius: r1,
-            },
-        )
+        Split::halves(*self)
     }
 
     #[inline(always)]
@@ -180,9 +175,8 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Sphere<V> {
 type Prepared<V> = PreparedSphere<V>;
 
 impl<V: Point3<Lane = L>, L: Math> PreparedShape<V> for PreparedSphere<V> {
-    // Always inlined: with sixteen lanes run as two calls of eight, the eight-lane sample has two
-    // callers, and LLVM then kept it out of line, which cost the sphere light 7 % more
-    // instructions at width 8.
+    // Always inlined: where sixteen lanes run as two calls of eight, the eight-lane sample has two
+    // callers, and out of line it costs the sphere light 7 % more instructions at width 8.
     #[inline(always)]
     fn sample(&self, u: V::Vec2) -> ShapeSample<V> {
         let u: V2<L> = u.to_lanes();

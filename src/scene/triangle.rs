@@ -12,7 +12,7 @@ use super::shape::{
 };
 use crate::lane::V3;
 use crate::math::Math;
-use crate::point::{Point2, Point3, halves3};
+use crate::point::{Point2, Point3, Split, split_fields};
 use crate::warp::plane_dot;
 use crate::warp::{
     BilinearTriangle, ProjectedTriangle, SphericalTriangle, uniform_triangle, wide_cross,
@@ -48,6 +48,8 @@ pub struct Triangle<V: Point3 = Vec3> {
     /// The vertices.
     pub v: [V; 3],
 }
+
+split_fields!(Triangle { v: points });
 
 /// A triangle light: a [`Triangle`] emitting on the side of its normal.
 pub type TriangleLight<V = Vec3> = Emitter<Triangle<V>, V>;
@@ -109,11 +111,7 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Triangle<V> {
 
     #[inline(always)]
     fn halves(&self) -> (Triangle<V::Half>, Triangle<V::Half>) {
-        let v = self.v.map(halves3);
-        (
-            Triangle { v: v.map(|h| h.0) },
-            Triangle { v: v.map(|h| h.1) },
-        )
+        Split::halves(*self)
     }
 
     #[inline(always)]

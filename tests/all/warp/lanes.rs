@@ -381,7 +381,7 @@ fn the_tent_pair_drops_both_coordinates_at_nan_in_either() {
 fn sixteen_lanes_split_only_without_avx512() {
     use mcsample::lane::{Lanes, V3};
     use mcsample::math::Math;
-    use mcsample::point::Split;
+    use mcsample::point::{Join, Split};
     assert_eq!(<F32x16 as Math>::SPLIT, !cfg!(target_feature = "avx512f"));
     const { assert!(!<F32x8 as Math>::SPLIT && !<f32 as Math>::SPLIT && !<f64 as Math>::SPLIT) };
     let x = F32x16::new(std::array::from_fn(|i| i as f32 - 7.5));
@@ -397,7 +397,7 @@ fn sixteen_lanes_split_only_without_avx512() {
         };
         assert_eq!(got.to_bits(), x.to_array()[i].to_bits(), "lane {i}");
     }
-    let back: V3<F32x16> = Split::join(lo, hi);
+    let back: V3<F32x16> = Join::join(lo, hi);
     for (a, b) in [(back.x, v.x), (back.y, v.y), (back.z, v.z)] {
         assert_eq!(
             a.to_array().map(f32::to_bits),

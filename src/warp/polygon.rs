@@ -7,8 +7,9 @@
 //! same operations as the scalar form, so both f32 widths agree bit for bit, and the f64 instance
 //! runs the same arithmetic as its reference.
 
-use crate::lane::{Lane, Mask, V3};
+use crate::lane::{Lane, Mask, V3, Widen};
 use crate::math::Math;
+use crate::point::by_halves;
 
 /// The terms of Van Oosterom–Strackee's solid angle of triangle (a, b, c) seen from the origin,
 /// computed in f64: `(n, h, t, d)` with
@@ -54,9 +55,17 @@ pub(crate) fn dot_wide<L: Math>(a: [L; 3], b: [L; 3]) -> L {
 /// rounding the normal to f32 first would cost ε over that cosine.
 #[inline(always)]
 pub(crate) fn plane_dot<L: Math>(w: [L; 3], a: [L; 3], b: [L; 3], c: [L; 3]) -> L {
-    let x = |v: [L; 3]| v.map(L::widen);
-    let n = cross_in(sub_in(x(b), x(a)), sub_in(x(c), x(a)));
-    L::narrow(dot_in(x(w), n))
+    // Sixteen lanes without AVX-512 as two calls of eight (`point::Split`): twelve f64 values
+    // of sixteen lanes fill every register of the f64 arithmetic many times over, and spill.
+    by_halves(
+        (w, a, b, c),
+        #[inline(always)]
+        |(w, a, b, c)| {
+            let x = |v: [L::Half; 3]| v.map(Widen::widen);
+            let n = cross_in(sub_in(x(b), x(a)), sub_in(x(c), x(a)));
+            Widen::narrow(dot_in(x(w), n))
+        },
+    )
 }
 
 #[inline(always)]
@@ -141,9 +150,16 @@ pub(crate) fn vos_solid_angle<L: Math>(
 /// by area on the parallelogram `corner + s·ex + t·ey`: see [`area_pdf_in`].
 #[inline(always)]
 pub(crate) fn parallelogram_area_pdf<L: Math>(w: V3<L>, corner: V3<L>, ex: V3<L>, ey: V3<L>) -> L {
-    let x = |v: V3<L>| [v.x, v.y, v.z].map(L::widen);
-    let n = cross_in(x(ex), x(ey));
-    area_pdf_in(x(w), dot_in(x(corner), n), n, L::ONE)
+    // In halves, as `plane_dot`.
+    by_halves(
+        (w, corner, ex, ey),
+        #[inline(always)]
+        |(w, corner, ex, ey)| {
+            let x = |v: V3<L::Half>| [v.x, v.y, v.z].map(Widen::widen);
+            let n = cross_in(x(ex), x(ey));
+            area_pdf_in(x(w), dot_in(x(corner), n), n, L::Half::ONE)
+        },
+    )
 }
 
 /// pdf per steradian of direction `w` (of any nonzero length) when points are drawn uniformly
@@ -151,10 +167,17 @@ pub(crate) fn parallelogram_area_pdf<L: Math>(w: V3<L>, corner: V3<L>, ex: V3<L>
 /// the vertex nearest the shading point, where a·n from a far vertex can cancel to nothing): see
 /// [`area_pdf_in`].
 #[inline(always)]
-pub(crate) fn triangle_area_pdf<L: Math>(w: V3<L>, h: L, [a, b, c]: [V3<L>; 3]) -> L {
-    let x = |v: V3<L>| [v.x, v.y, v.z].map(L::widen);
-    let n = cross_in(sub_in(x(b), x(a)), sub_in(x(c), x(a)));
-    area_pdf_in(x(w), h.widen(), n, L::TWO)
+pub(crate) fn triangle_area_pdf<L: Math>(w: V3<L>, h: L, v: [V3<L>; 3]) -> L {
+    // In halves, as `plane_dot`.
+    by_halves(
+        (w, h, v),
+        #[inline(always)]
+        |(w, h, [a, b, c])| {
+            let x = |v: V3<L::Half>| [v.x, v.y, v.z].map(Widen::widen);
+            let n = cross_in(sub_in(x(b), x(a)), sub_in(x(c), x(a)));
+            area_pdf_in(x(w), h.widen(), n, L::Half::TWO)
+        },
+    )
 }
 
 /// The area pdf in solid angle of direction `w` for a planar light with normal n (unnormalised),

@@ -16,7 +16,7 @@ use glam::Vec3;
 
 use crate::lane::V3;
 use crate::math::Math;
-use crate::point::Point3;
+use crate::point::{Point3, split_fields};
 
 /// A right-handed orthonormal frame (`t`, `b`, `n`): local +z is `n`. `V` is the width:
 /// [`glam::Vec3`] by default, [`Vec3x8`](crate::x8::Vec3x8) for eight frames, [`glam::DVec3`].
@@ -29,6 +29,8 @@ pub struct Frame<V = Vec3> {
     /// The normal: local +z.
     pub n: V,
 }
+
+split_fields!(Frame<V: Point3> by V::Lane { t: point, b: point, n: point });
 
 impl<V: Point3<Lane = L>, L: Math> Frame<V> {
     /// The frame around unit normal `n` (Duff et al.).

@@ -119,6 +119,10 @@ pub trait Math: Widen {
     fn halves(self) -> (Self::Half, Self::Half);
     /// The lane whose halves are `lo` and `hi`; where the width runs whole, `lo`.
     fn join(lo: Self::Half, hi: Self::Half) -> Self;
+    /// A mask's halves, lane for lane as [`halves`](Self::halves).
+    fn mask_halves(m: Self::Mask) -> (<Self::Half as Lane>::Mask, <Self::Half as Lane>::Mask);
+    /// The mask whose halves are `lo` and `hi`, as [`join`](Self::join).
+    fn mask_join(lo: <Self::Half as Lane>::Mask, hi: <Self::Half as Lane>::Mask) -> Self::Mask;
     /// sin and cos, within the table's bound for |x| ≤ 6433.
     fn sin_cos(self) -> (Self, Self);
     /// sin and cos of 2π·self, with exact range reduction in `self`.
@@ -175,6 +179,12 @@ macro_rules! whole {
         inline_fns! {
             fn halves(self) -> ($t, $t) { (self, self) }
             fn join(lo: $t, _hi: $t) -> $t { lo }
+            fn mask_halves(m: <$t as Lane>::Mask) -> (<$t as Lane>::Mask, <$t as Lane>::Mask) {
+                (m, m)
+            }
+            fn mask_join(lo: <$t as Lane>::Mask, _hi: <$t as Lane>::Mask) -> <$t as Lane>::Mask {
+                lo
+            }
         }
     };
 }
@@ -187,6 +197,9 @@ macro_rules! halves16 {
         inline_fns! {
             fn halves(self) -> (F32x8, F32x8) { crate::lane::halves16(self) }
             fn join(lo: F32x8, hi: F32x8) -> F32x16 { crate::lane::join16(lo, hi) }
+            // The packets' masks are lanes of all-ones or zero bits: they split as lanes do.
+            fn mask_halves(m: F32x16) -> (F32x8, F32x8) { crate::lane::halves16(m) }
+            fn mask_join(lo: F32x8, hi: F32x8) -> F32x16 { crate::lane::join16(lo, hi) }
         }
     };
 }

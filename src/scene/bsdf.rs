@@ -31,11 +31,7 @@ pub struct BsdfSample<V: Point3> {
     pub pdf: V::Lane,
 }
 
-split_fields!(BsdfSample {
-    wi: point,
-    f: point,
-    pdf
-});
+split_fields!(BsdfSample<V: Point3> by V::Lane { wi: point, f: point, pdf });
 
 /// The Lambertian BSDF f = ρ/π (RGB albedo ρ), sampled by the cosine hemisphere (Malley's
 /// method): pdf cos θ/π, so f·cos θ/pdf = ρ exactly.
@@ -101,11 +97,7 @@ pub struct Phong<V: Point3 = Vec3> {
 
 // Sixteen lanes without AVX-512 run as two calls of eight (`point::Split`): the lobe's logarithm
 // and exponential spill at width 16.
-split_fields!(Phong {
-    kd: point,
-    ks: point,
-    n
-});
+split_fields!(Phong<V: Point3> by V::Lane { kd: point, ks: point, n });
 
 impl<V: Point3<Lane = L>, L: Math> Phong<V> {
     /// The modified Phong BSDF with reflectances `kd`, `ks` and exponent `n`.

@@ -45,11 +45,7 @@ pub struct Disk<V: Point3 = Vec3> {
     pub radius: V::Lane,
 }
 
-split_fields!(Disk {
-    center: point,
-    normal: point,
-    radius
-});
+split_fields!(Disk<V: Point3> by V::Lane { center: point, normal: point, radius });
 
 /// A disk light: a [`Disk`] emitting on the side of its normal.
 pub type DiskLight<V = Vec3> = Emitter<Disk<V>, V>;

@@ -62,12 +62,7 @@ pub struct LightSample<V: Point3> {
     pub pdf: V::Lane,
 }
 
-split_fields!(LightSample {
-    wi: point,
-    dist,
-    le: point,
-    pdf
-});
+split_fields!(LightSample<V: Point3> by V::Lane { wi: point, dist, le: point, pdf });
 
 /// A point on a light, drawn uniformly by area, from `sample_area`.
 #[derive(Clone, Copy, Debug, PartialEq)]

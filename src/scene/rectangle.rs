@@ -47,11 +47,7 @@ pub struct Rectangle<V: Point3 = Vec3> {
     pub ey: V,
 }
 
-split_fields!(Rectangle {
-    corner: point,
-    ex: point,
-    ey: point
-});
+split_fields!(Rectangle<V: Point3> by V::Lane { corner: point, ex: point, ey: point });
 
 /// A parallelogram light: a [`Rectangle`] emitting on the side of its normal.
 pub type RectangleLight<V = Vec3> = Emitter<Rectangle<V>, V>;

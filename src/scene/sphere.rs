@@ -10,7 +10,7 @@ use super::shape::{AreaPoint, LightSampling, PreparedShape, Shape, ShapeSample, 
 use crate::frame::Frame;
 use crate::lane::{Lane, Mask, V2, V3};
 use crate::math::Math;
-use crate::point::{Point2, Point3, Split, split_fields};
+use crate::point::{Point2, Point3, Split, by_halves, split_fields};
 use crate::warp::{ProjectedCap, cone_h_from_sin2, uniform_cone, uniform_sphere};
 
 /// A sphere of radius `radius` about `center`; as a light ([`SphereLight`](super::SphereLight))
@@ -43,10 +43,7 @@ pub struct Sphere<V: Point3 = Vec3> {
     pub radius: V::Lane,
 }
 
-split_fields!(Sphere {
-    center: point,
-    radius
-});
+split_fields!(Sphere<V: Point3> by V::Lane { center: point, radius });
 
 /// A sphere light: a [`Sphere`] emitting outwards.
 pub type SphereLight<V = Vec3> = Emitter<Sphere<V>, V>;
@@ -120,8 +117,14 @@ impl<V: Point3<Lane = L>, L: Math> Shape<V> for Sphere<V> {
         let sin2_bound = (sin_max + slack) * (sin_max + slack);
         let axis = d.scale(L::ONE / dist);
         let valid = r.gt(L::ZERO) & r2.is_finite() & dist2.is_finite() & !p.any_nan();
-        let cap = match sampling {
-            LightSampling::Projected => Some(ProjectedCap::new(d, r, n.to_lanes())),
+        let cap: Option<ProjectedCap<V3<L>>> = match sampling {
+            // In halves at sixteen lanes without AVX-512 (`point::Split`). The free function
+            // `projected_cap` splits at its top already.
+            LightSampling::Projected => Some(by_halves(
+                (d, r, n.to_lanes()),
+                #[inline(always)]
+                |(d, r, n)| ProjectedCap::new(d, r, n),
+            )),
             _ => None,
         };
         let by_cap = match &cap {

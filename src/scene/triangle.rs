@@ -49,7 +49,7 @@ pub struct Triangle<V: Point3 = Vec3> {
     pub v: [V; 3],
 }
 
-split_fields!(Triangle { v: points });
+split_fields!(Triangle<V: Point3> by V::Lane { v: points });
 
 /// A triangle light: a [`Triangle`] emitting on the side of its normal.
 pub type TriangleLight<V = Vec3> = Emitter<Triangle<V>, V>;

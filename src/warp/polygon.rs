@@ -9,7 +9,7 @@
 
 use crate::lane::{Lane, Mask, V3, Widen};
 use crate::math::Math;
-use crate::point::by_halves;
+use crate::point::{by_halves, split_fields};
 
 /// The terms of Van Oosterom–Strackee's solid angle of triangle (a, b, c) seen from the origin,
 /// computed in f64: `(n, h, t, d)` with
@@ -222,6 +222,8 @@ pub(crate) struct EdgePlanes<L: Math, const N: usize> {
     /// −[`inside_slack`].
     slack: L,
 }
+
+split_fields!(EdgePlanes<L: Math, const N> by L { m, slack });
 
 impl<L: Math, const N: usize> EdgePlanes<L, N> {
     /// The planes through the origin and the polygon's edges, from their unit normals along

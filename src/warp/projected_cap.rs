@@ -47,7 +47,7 @@ use glam::Vec3;
 use crate::frame::Frame;
 use crate::lane::{Lane, Lanes, Mask, V2, V3, Widen};
 use crate::math::Math;
-use crate::point::{Point2, Point3, halved};
+use crate::point::{Point2, Point3, halved, split_fields};
 use crate::warp::common::{azimuth_fraction, clamp_u, pick};
 use crate::warp::family::{is_unit, lane, lanes3};
 use crate::warp::polygon::{cross3_in, dot3_in, widen3};
@@ -70,6 +70,8 @@ struct LuneKnot<L> {
     g: L,
     inv_w: L,
 }
+
+split_fields!(LuneKnot<L: Math> by L { g, inv_w });
 
 /// θ − sin θ for θ ∈ [0, π/2] by its Taylor series θ³/3! − θ⁵/5! + … − θ²¹/21!, whose
 /// truncation is below 3e-18 relative there: no cancellation near 0, and no choice between a
@@ -175,6 +177,13 @@ struct Cap<L: Math> {
     /// Nothing above the horizon, or degenerate input: no direction to sample.
     empty: L::Mask,
 }
+
+// A sphere light prepared at sixteen lanes without AVX-512 builds the set-up as two calls of
+// eight (`point::Split`): its f64 terms spill at width 16.
+split_fields!(Cap<L: Math> by L {
+    frame, cx, cz, s, cos_a, xe, a, ellipse, w0, yc, half, g_end, knots, horn, p, spread, cone,
+    h, n, c, valid: mask, empty: mask,
+});
 
 impl<L: Math> Cap<L> {
     #[inline(always)]
@@ -493,6 +502,8 @@ impl<L: Math> Cap<L> {
 /// [`projected_cap`]. The set-up (the frame, the ellipse and the lune, P) is paid once.
 #[derive(Clone, Copy)]
 pub struct ProjectedCap<P: Point3>(Cap<P::Lane>);
+
+split_fields!(ProjectedCap<P: Point3> by P::Lane { 0 });
 
 impl<P: Point3<Lane = L>, L: Math> ProjectedCap<P> {
     /// The sphere of radius `radius` about `center` (relative to the shading point), seen by a

@@ -17,7 +17,7 @@ use core::marker::PhantomData;
 
 use crate::lane::{Lane, Mask, V2, V3};
 use crate::math::Math;
-use crate::point::{Point2, Point3, halved};
+use crate::point::{Point2, Point3, by_halves, halved, split_fields};
 use crate::warp::common::clamp_u;
 use crate::warp::polygon::{cross_wide, dot_wide, plane_dot};
 use crate::warp::polygon::{parallelogram_area_pdf, pow2_scale};
@@ -108,6 +108,12 @@ struct Setup<L: Math> {
     beyond_reach: L::Mask,
 }
 
+split_fields!(Setup<L: Math> by L {
+    given_corner, scale, unscale, corner, ex, ey, xh, yh, cos_xy, foot, x0, x1, strip, l0, r1,
+    col0, psi, sin_psi0, cos_psi0, sin_psi1, cos_psi1, omega, planes, slack, valid: mask,
+    by_area: mask, beyond_reach: mask,
+});
+
 /// The strip y0 ≤ y ≤ y1 of the plane at distance d, in the rectangle's frame, and its lune:
 /// what the solid angles below share. dy = y1 − y0 is the edge's length, not recomputed (which
 /// would cancel for a far rectangle).
@@ -128,6 +134,8 @@ struct Strip<L> {
     opposite: L,
 }
 
+split_fields!(Strip<L: Math> by L { y0, y1, dy, d, inv_rr, beta, opposite });
+
 /// The column of the strip at x (see [`column`]).
 #[derive(Clone, Copy)]
 struct Column<L> {
@@ -140,6 +148,8 @@ struct Column<L> {
     rb: L,
     rho: L,
 }
+
+split_fields!(Column<L: Math> by L { x, g, t, ra, rb, rho });
 
 /// (ra·rb + ya·yb, ra·rb − ya·yb) for ra = √(ρ² + ya²), rb = √(ρ² + yb²), without
 /// cancellation: the sum where ya·yb ≥ 0 and the difference where ya·yb ≤ 0 directly, the other
@@ -607,7 +617,12 @@ impl<P: Point3<Lane = L>, L: Math> SphericalRectangle<P> {
     #[cfg_attr(not(target_os = "none"), inline(always))]
     pub fn new(corner: P, ex: P, ey: P) -> Self {
         Self {
-            s: setup(corner.to_lanes(), ex.to_lanes(), ey.to_lanes()),
+            // In halves at sixteen lanes without AVX-512 (`point::Split`).
+            s: by_halves(
+                (corner.to_lanes(), ex.to_lanes(), ey.to_lanes()),
+                #[inline(always)]
+                |(corner, ex, ey)| setup(corner, ex, ey),
+            ),
             width: PhantomData,
         }
     }

@@ -8,7 +8,7 @@ use core::marker::PhantomData;
 
 use crate::lane::{Mask, V2, V3};
 use crate::math::Math;
-use crate::point::{Point2, Point3, halved};
+use crate::point::{Point2, Point3, by_halves, halved, split_fields};
 use crate::warp::common::clamp_u;
 use crate::warp::polygon::{
     EdgePlanes, needs_pow2_scale, pow2_scale, triangle_area_pdf, vos_solid_angle,
@@ -65,6 +65,11 @@ struct Setup<L: Math> {
     /// True where it is sampled by area.
     by_area: L::Mask,
 }
+
+split_fields!(Setup<L: Math> by L {
+    a, b, c, edges, h, ua, ub, uc, n, unscale, omega, t_a, t_c, sin_ab, sin_cb, vs_a, vc_a, vs_c,
+    vc_c, valid: mask, by_area: mask,
+});
 
 #[inline(always)]
 fn setup<L: Math>(a: V3<L>, b: V3<L>, c: V3<L>) -> Setup<L> {
@@ -327,7 +332,12 @@ impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
     #[cfg_attr(not(target_os = "none"), inline(always))]
     pub fn new(a: P, b: P, c: P) -> Self {
         Self {
-            s: setup(a.to_lanes(), b.to_lanes(), c.to_lanes()),
+            // In halves at sixteen lanes without AVX-512 (`point::Split`).
+            s: by_halves(
+                (a.to_lanes(), b.to_lanes(), c.to_lanes()),
+                #[inline(always)]
+                |(a, b, c)| setup(a, b, c),
+            ),
             width: PhantomData,
         }
     }

@@ -6,9 +6,12 @@
 //! *i*'s input, bit for bit. There the long algorithms run as two eight-wide calls
 //! ([`Split`](crate::point::Split)), which keeps their intermediates in registers: the free
 //! functions of the spherical, bilinear and projected polygons, the projected cap and the
-//! spherical ellipse, a light's `sample`, `pdf` and `hit` at a point, and the Phong BSDF.
-//! Everything else runs the sixteen lanes together: the short warps, and the prepared forms
-//! (`SphericalTriangle<Vec3x16>`, a light prepared at a point, the estimator).
+//! spherical ellipse, a light's `sample`, `pdf` and `hit` at a point, the Phong BSDF, the set-ups
+//! of the spherical triangle and rectangle and of a sphere light's projected cap, and the f64
+//! plane and area terms of a polygon light's pdf. Everything else runs the sixteen lanes
+//! together: the short warps, the queries of a prepared form (`SphericalTriangle<Vec3x16>`, a
+//! light prepared at a point), which would copy their set-up into halves at every query, and the
+//! estimator around them.
 //!
 //! ```
 //! use glam::Vec2;

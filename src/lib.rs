@@ -14,7 +14,7 @@
 //! |---|---|---|---|
 //! | 1 | [`lane`] | the [`Lane`](lane::Lane) traits (arithmetic, masks, selects, bits) over `f32`, [`F32x8`](x8::F32x8), [`F32x16`](x16::F32x16) and `f64`, the integer lane [`U32Lane`](lane::U32Lane), and the generic vectors [`V2`](lane::V2), [`V3`](lane::V3) | — |
 //! | 2 | [`math`] | [`Math`](math::Math): the crate's own transcendental functions, with their ulp bounds, and libm for f64 | lane |
-//! | 2 | [`point`] | [`Point2`](point::Point2), [`Point3`](point::Point3): the argument type that picks a call's width; [`Split`](point::Split), [`Join`](point::Join): a width as two halves and back, which the long algorithms and set-ups run where the build has no AVX-512 | lane, math |
+//! | 2 | [`point`] | [`Point2`](point::Point2), [`Point3`](point::Point3): the argument type that picks a call's width; [`Split`](point::Split), [`Join`](point::Join): a width as two halves and back, which the long algorithms and some set-ups run where the build has no AVX-512 | lane, math |
 //! | 2 | [`x8`], [`x16`] | the public packet types of each width | lane |
 //! | 2 | [`rng`] | `Pcg32x8`, `Pcg32x16`: eight or sixteen PCG32 streams, lane *i* equal to `rand_pcg::Pcg32` | lane |
 //! | 3 | [`seq`] | stateless generators of (index, dimension, seed), the estimators' sample sources, and point-set quality measures | lane, rng |

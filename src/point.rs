@@ -148,12 +148,12 @@ impl<L: Math> Point3 for V3<L> {
 
 /// A value of one width as two values of half its width, where the build runs the width as two
 /// halves, or as itself: the lanes ([`Math::Half`]), [`V2`], [`V3`], arrays and tuples of them,
-/// and the crate's structs of them (`split_fields!`).
+/// and the crate's structs of them.
 ///
 /// Without AVX-512, `wide` runs each [`F32x16`](crate::x16::F32x16) operation as two eight-wide
 /// ones, so a long algorithm at width 16 holds every intermediate in twice the registers of width
-/// 8 and spills: the spherical triangle takes 1.4× the time per sample of its eight-wide form,
-/// the bilinear rectangle 1.8×. The long algorithms (the free functions of the spherical,
+/// 8 and spills: run whole at width 16, the spherical triangle takes 1.4× the time per sample of
+/// its eight-wide form, the bilinear rectangle 1.8×. The long algorithms (the free functions of the spherical,
 /// bilinear and projected polygons, the projected cap and the spherical ellipse; a light's
 /// queries at a point; the Phong BSDF) therefore run a sixteen-wide call as two eight-wide
 /// calls there, through `by_halves`. Lane *i* is the scalar computation on lane *i*'s inputs
@@ -176,9 +176,12 @@ pub trait Join: Split {
 
 /// `f(x)`, or, where `x`'s width runs as two halves, `f` of each half, joined. The long
 /// algorithms' public entries call it once, at the top; the short warps gain nothing from it.
-/// So do the prepared forms' constructors (the set-ups), but not their queries: a set-up read
-/// through `&self` would be copied into its halves at every query, kilobytes a sample (the
-/// projected cap's sample, so split, took 3.3× the time at sixteen lanes and 5× at eight).
+/// The spherical triangle's and rectangle's constructors (their set-ups) call it too, and so do
+/// the f64 plane and area terms of the polygons, wherever they run: their few arguments cost
+/// nothing to split. A prepared form's queries do not: a set-up read through `&self` is copied
+/// into its halves at every query, kilobytes a sample, which costs more than the spills it
+/// saves (split so, the projected cap's sample takes 3.3× the time at sixteen lanes and 5× at
+/// eight).
 ///
 /// Callers mark `f` `#[inline(always)]`, and `f` calls a whole-width body, never the public
 /// entry itself. A closure left to LLVM, with one call from the x8 path and two from the x16
@@ -226,8 +229,8 @@ pub(crate) use halved;
 /// [`Split`] and [`Join`] for a struct of values of one width, field by field:
 /// `split_fields!(Phong<V: Point3> by V::Lane { kd: point, ks: point, n })`. The struct is
 /// generic over its point (`V: Point3`) or lane (`L: Math`) and any number of `const` lengths;
-/// `by` names its lane. A field marked `point` is a `V`, `points` an array of them, `mask` the
-/// lane's mask and `phantom` a marker; the others are [`Join`] themselves. Fields may be named
+/// `by` names its lane. A field marked `point` is a `V`, `points` an array of them and `mask`
+/// the lane's mask; the others are [`Join`] themselves. Fields may be named
 /// `0`, `1`, … (a tuple struct). Each half takes its own `halves` of every field: they are
 /// register moves, and LLVM keeps one of each pair.
 macro_rules! split_fields {
@@ -238,7 +241,6 @@ macro_rules! split_fields {
         (h.map(|h| h.0), h.map(|h| h.1))
     }};
     (@halves $l:ty, $x:expr, mask) => { <$l as $crate::math::Math>::mask_halves($x) };
-    (@halves $l:ty, $x:expr, phantom) => { (core::marker::PhantomData, core::marker::PhantomData) };
     (@join $l:ty, $lo:expr, $hi:expr) => { $crate::point::Join::join($lo, $hi) };
     (@join $l:ty, $lo:expr, $hi:expr, point) => { $crate::point::join3($lo, $hi) };
     (@join $l:ty, $lo:expr, $hi:expr, points) => {{
@@ -248,7 +250,6 @@ macro_rules! split_fields {
         core::array::from_fn(|i| $crate::point::join3(lo[i], hi[i]))
     }};
     (@join $l:ty, $lo:expr, $hi:expr, mask) => { <$l as $crate::math::Math>::mask_join($lo, $hi) };
-    (@join $l:ty, $lo:expr, $hi:expr, phantom) => { core::marker::PhantomData };
     (
         $t:ident<$p:ident: $bound:ident $(, const $c:ident)*> by $l:ty
         { $($f:tt $(: $k:ident)?),* $(,)? }
@@ -340,31 +341,11 @@ impl<T: Split, const N: usize> Split for [T; N] {
 impl<T: Join, const N: usize> Join for [T; N] {
     #[inline(always)]
     fn join(lo: Self::Half, hi: Self::Half) -> Self {
-        // By index (below N, so it cannot panic), not by iterator or counter: at a whole width
-        // `hi` is then unread and dropped, which the others left to LLVM (2 % more instructions
-        // in the spherical triangle's set-up).
+        // By index (below N, so it cannot panic): at a whole width `hi` is then unread and
+        // dropped. Through an iterator or a counter it survives (2 % more instructions in the
+        // spherical triangle's set-up).
         #[allow(clippy::indexing_slicing)]
         core::array::from_fn(|i| T::join(lo[i], hi[i]))
-    }
-}
-
-/// An optional value splits where it is present: both halves are `None` or both `Some`.
-impl<T: Split> Split for Option<T> {
-    type Half = Option<T::Half>;
-    const SPLIT: bool = T::SPLIT;
-    #[inline(always)]
-    fn halves(self) -> (Self::Half, Self::Half) {
-        match self.map(T::halves) {
-            Some((lo, hi)) => (Some(lo), Some(hi)),
-            None => (None, None),
-        }
-    }
-}
-
-impl<T: Join> Join for Option<T> {
-    #[inline(always)]
-    fn join(lo: Self::Half, hi: Self::Half) -> Self {
-        Some(T::join(lo?, hi?))
     }
 }
 

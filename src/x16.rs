@@ -7,11 +7,12 @@
 //! ([`Split`](crate::point::Split)), which keeps their intermediates in registers: the free
 //! functions of the spherical, bilinear and projected polygons, the projected cap and the
 //! spherical ellipse, a light's `sample`, `pdf` and `hit` at a point, the Phong BSDF, the set-ups
-//! of the spherical triangle and rectangle and of a sphere light's projected cap, and the f64
-//! plane and area terms of a polygon light's pdf. Everything else runs the sixteen lanes
-//! together: the short warps, the queries of a prepared form (`SphericalTriangle<Vec3x16>`, a
-//! light prepared at a point), which would copy their set-up into halves at every query, and the
-//! estimator around them.
+//! of the spherical triangle and rectangle (and so of the bilinear forms built on them) and of a
+//! sphere light's projected cap, and the polygons' f64 plane and area terms wherever they run.
+//! Everything else runs the sixteen lanes together: the short warps, the other set-ups (the
+//! spherical ellipse's, the projected polygons'), the rest of a prepared form's queries
+//! (`SphericalTriangle<Vec3x16>`, a light prepared at a point), which would copy their set-up into
+//! halves at every query, and the estimator around them.
 //!
 //! ```
 //! use glam::Vec2;

@@ -8,7 +8,8 @@
 //!   finite and ≥ 0, and within 1e-3 relative of the sample's pdf where the light is sampled
 //!   spherically and the spherical inverse returns the sample's u′ to 2e-6; a dropped sample at the documented point (+z, or
 //!   the corner); the zero normal giving the plain spherical sampler bit for bit;
-//! - the projected polygons: a kept sample a unit direction whose pdf is the pdf function's bit for
+//! - the projected polygons (triangle, parallelogram, and a hexagon about the fuzzed centre with
+//!   the fuzzed half-axes): a kept sample a unit direction whose pdf is the pdf function's bit for
 //!   bit, finite and > 0, its inverse in [0, 1]² (or NaN where it falls back to a spherical
 //!   rectangle beyond the inverse's reach); a dropped one +z with pdf 0;
 //! - the projected cap (a sphere about a fuzzed centre, of a fuzzed radius): as the projected
@@ -23,7 +24,7 @@ use glam::{Vec2, Vec3};
 use libfuzzer_sys::fuzz_target;
 use mcsample::lane::{F32x8, F32x16};
 use mcsample::warp::{
-    self, BilinearRectangle, BilinearTriangle, ProjectedCap, ProjectedRectangle,
+    self, BilinearRectangle, BilinearTriangle, ProjectedCap, ProjectedPolygon, ProjectedRectangle,
     ProjectedTriangle, SphericalRectangle, SphericalTriangle,
 };
 use mcsample::x8::{Vec2x8, Vec3x8};
@@ -373,6 +374,36 @@ fuzz_target!(|data: &[u8]| {
         [
             (x8.lane(4), p8.to_array()[4], r8.inverse(x8).lane(4)),
             (x16.lane(8), p16.to_array()[8], r16.inverse(x16).lane(8)),
+        ],
+    );
+
+    // The hexagon about c with half-axes a and ey (convex; degenerate where they are
+    // parallel), among the other lanes' hexagons from the rectangles' vectors.
+    let hex = |q: [Vec3; 4]| warp::hexagon([q[0], q[1], q[2]]);
+    let h = ProjectedPolygon::new(hex([c, a, ey, n]), n);
+    let lanes8: [[Vec3; 4]; 8] =
+        core::array::from_fn(|i| if i % 2 == 0 { [c, a, ey, n] } else { rects(n)[(i / 2 + 3) % rects(n).len()] });
+    let lanes16: [[Vec3; 4]; 16] =
+        core::array::from_fn(|i| if i % 2 == 0 { [c, a, ey, n] } else { rects(n)[(i / 2) % rects(n).len()] });
+    let h8 = ProjectedPolygon::new(
+        core::array::from_fn::<_, 6, _>(|k| Vec3x8::from(lanes8.map(|q| hex(q)[k]))),
+        Vec3x8::from(lanes8.map(|q| q[3])),
+    );
+    let h16 = ProjectedPolygon::new(
+        core::array::from_fn::<_, 6, _>(|k| Vec3x16::from(lanes16.map(|q| hex(q)[k]))),
+        Vec3x16::from(lanes16.map(|q| q[3])),
+    );
+    let (x, pdf) = h.sample(u);
+    let (x8, p8) = h8.sample(Vec2x8::splat(u));
+    let (x16, p16) = h16.sample(Vec2x16::splat(u));
+    check_projected(
+        &format!("projected hexagon {:?} n {n:?} u {u:?}", [c, a, ey]),
+        (x, pdf),
+        h.pdf(x),
+        (h.inverse(x), h.by_solid_angle()),
+        [
+            (x8.lane(2), p8.to_array()[2], h8.inverse(x8).lane(2)),
+            (x16.lane(14), p16.to_array()[14], h16.inverse(x16).lane(14)),
         ],
     );
 

@@ -51,7 +51,8 @@ pub use lights::LightSampler;
 /// instances for a receiver's normal ([`TILTED`], and one with a corner below the horizon). The
 /// projected triangle is the large one for the normal inside it (+z), [`TILTED`] (decentral) and
 /// +x (across the horizon), and a small one (0.2) for [`TILTED`]; the projected rectangle the
-/// same with −x across the horizon. The projected caps are a sphere wholly above the horizon,
+/// same with −x across the horizon, and the projected hexagon ([`hexagon_axes`]) as the
+/// triangle and a tiny one (0.01, 6e-5 sr) sampled through its fan by solid angle. The projected caps are a sphere wholly above the horizon,
 /// one with its centre above and one with it below the horizon, each across it, and a small
 /// one (0.0035 sr) for [`TILTED`]. The tiny sphere has sin²θmax = 1e-4: smaller ones (down to 1e-12) are
 /// tested in the scene's tests, where the χ² judge is the f64 pdf; here the f32 pdf's slack of
@@ -101,6 +102,13 @@ macro_rules! families {
                 (1.0, Vec3::NEG_X),
                 (0.2, TILTED),
             ].map(|(s, n)| warp::ProjectedSolidAngleRectangle { v: rectangle(s), n });
+            ProjectedHexagon: warp::ProjectedSolidAngleHexagon = [
+                (1.0, Vec3::Z),
+                (1.0, TILTED),
+                (1.0, Vec3::X),
+                (0.2, TILTED),
+                (0.01, TILTED),
+            ].map(|(s, n)| warp::ProjectedSolidAngleHexagon { v: hexagon_axes(s), n });
             ProjectedCap: warp::ProjectedSolidAngleCap = [
                 (Vec3::new(0.3, 0.1, 1.0), 0.5, Vec3::Z),
                 (Vec3::new(2.0, 0.3, 0.5), 1.0, Vec3::Z),
@@ -152,6 +160,16 @@ pub const fn rectangle(s: f32) -> [Vec3; 3] {
 
 /// Generates [`Sampler`] from the list: one variant per family, `From` each family, and the
 /// dispatch of [`Family`]'s items.
+/// The centre and half-axes of the registry's hexagons ([`warp::hexagon`]), scaled by s about
+/// (0, 0, 1) as the triangles are.
+pub const fn hexagon_axes(s: f32) -> [Vec3; 3] {
+    [
+        Vec3::new(0.05 * s, -0.02 * s, 1.0),
+        Vec3::new(0.5 * s, 0.1 * s, 0.15 * s),
+        Vec3::new(-0.1 * s, 0.45 * s, -0.1 * s),
+    ]
+}
+
 macro_rules! define_sampler {
     ($($variant:ident: $family:ty = $instances:expr;)*) => {
         /// One sampler of the registry: a family at its parameters.

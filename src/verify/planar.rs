@@ -1,6 +1,7 @@
 //! χ² tests for light samplers on a planar light's own parameter square.
 
 use glam::{DVec2, DVec3, Vec3};
+use std::vec::Vec;
 
 use super::chi2::{ChiSquare, ChiSquareResult, Square};
 
@@ -32,12 +33,18 @@ pub fn square_to_triangle(st: DVec2) -> DVec2 {
 ///
 /// A pdf p_ω per steradian becomes p_ω·A·cos θ_l/d² on the square (A the light's area, θ_l the
 /// angle at the light, d the distance): exactly 1 for a sampler uniform by area.
+///
+/// A convex polygon ([`PlanarLight::fan`]) is its fan of triangles (v₀, vᵢ, vᵢ₊₁), each mapped
+/// so onto a strip of the square as tall as its share of the area: the polygon's edges become
+/// the square's boundary, the fan's diagonals lines inside it.
 #[derive(Clone, Copy, Debug)]
 pub struct PlanarLight {
     p0: DVec3,
     e1: DVec3,
     e2: DVec3,
     triangle: bool,
+    /// A fan's vertices (up to eight) and how many, or none.
+    fan: Option<([Vec3; 8], usize)>,
 }
 
 impl PlanarLight {
@@ -49,6 +56,7 @@ impl PlanarLight {
             e1: b.as_dvec3() - a,
             e2: c.as_dvec3() - a,
             triangle: true,
+            fan: None,
         }
     }
 
@@ -59,6 +67,56 @@ impl PlanarLight {
             e1: ex.as_dvec3(),
             e2: ey.as_dvec3(),
             triangle: false,
+            fan: None,
+        }
+    }
+
+    /// The convex polygon with vertices `v` in order (3 to 8 of them, coplanar), relative to
+    /// the shading point.
+    pub fn fan(v: &[Vec3]) -> Self {
+        assert!((3..=8).contains(&v.len()), "a fan of 3 to 8 vertices");
+        let mut all = [Vec3::ZERO; 8];
+        for (a, x) in all.iter_mut().zip(v) {
+            *a = *x;
+        }
+        PlanarLight {
+            fan: Some((all, v.len())),
+            ..Self::triangle(v[0], v[1], v[2])
+        }
+    }
+
+    /// A fan's triangles as (v₀, e₁, e₂), with the share of the area before each and its own.
+    fn fan_triangles(&self) -> Vec<(DVec3, DVec3, DVec3, f64, f64)> {
+        let Some((v, n)) = self.fan else {
+            return Vec::new();
+        };
+        let v = v.map(|x| x.as_dvec3());
+        let areas: Vec<f64> = (0..n - 2)
+            .map(|i| (v[i + 1] - v[0]).cross(v[i + 2] - v[0]).length())
+            .collect();
+        let total: f64 = areas.iter().sum();
+        let mut before = 0.0;
+        (0..n - 2)
+            .map(|i| {
+                let share = areas[i] / total;
+                let t = (v[0], v[i + 1] - v[0], v[i + 2] - v[0], before, share);
+                before += share;
+                t
+            })
+            .collect()
+    }
+
+    /// The light's area.
+    fn area(&self) -> f64 {
+        let n = self.normal().length();
+        match self.fan {
+            Some(_) => self
+                .fan_triangles()
+                .iter()
+                .map(|&(_, e1, e2, _, _)| e1.cross(e2).length() / 2.0)
+                .sum(),
+            None if self.triangle => n / 2.0,
+            None => n,
         }
     }
 
@@ -69,6 +127,25 @@ impl PlanarLight {
     /// The parameter-square point hit by direction `w`.
     pub fn to_square(&self, w: DVec3) -> DVec2 {
         let n = self.normal();
+        if self.fan.is_some() {
+            // The triangle of the fan whose wedge at v₀ holds the point (the nearest where
+            // rounding leaves it in none), then its strip.
+            let x = w * (self.p0.dot(n) / w.dot(n)) - self.p0;
+            let mut best = (f64::NEG_INFINITY, DVec2::ZERO);
+            for (_, e1, e2, before, share) in self.fan_triangles() {
+                let m = e1.cross(e2);
+                let beta = x.cross(e2).dot(m) / m.dot(m);
+                let gamma = e1.cross(x).dot(m) / m.dot(m);
+                if beta.min(gamma) > best.0 {
+                    let st = triangle_to_square(beta, gamma);
+                    best = (beta.min(gamma), DVec2::new(st.x, before + share * st.y));
+                }
+                if beta >= 0.0 && gamma >= 0.0 {
+                    break;
+                }
+            }
+            return best.1;
+        }
         let x = w * (self.p0.dot(n) / w.dot(n)) - self.p0;
         let beta = x.cross(self.e2).dot(n) / n.dot(n);
         let gamma = self.e1.cross(x).dot(n) / n.dot(n);
@@ -81,6 +158,15 @@ impl PlanarLight {
 
     /// The point of the light at parameter-square point `st`.
     pub fn from_square(&self, st: DVec2) -> DVec3 {
+        if self.fan.is_some() {
+            let fan = self.fan_triangles();
+            let last = fan.len() - 1;
+            let i = fan.iter().position(|t| st.y < t.3 + t.4).unwrap_or(last);
+            let (p0, e1, e2, before, share) = fan[i];
+            let t = ((st.y - before) / share).clamp(0.0, 1.0);
+            let bg = square_to_triangle(DVec2::new(st.x, t));
+            return p0 + bg.x * e1 + bg.y * e2;
+        }
         let bg = if self.triangle {
             square_to_triangle(st)
         } else {
@@ -104,11 +190,7 @@ impl PlanarLight {
     {
         let light = *self;
         let n = self.normal();
-        let area = if self.triangle {
-            n.length() / 2.0
-        } else {
-            n.length()
-        };
+        let area = self.area();
         config.run(
             move |i| light.to_square(sample(i).as_dvec3()),
             move |st: DVec2| {

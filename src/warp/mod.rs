@@ -1,9 +1,10 @@
 //! Warps: maps from the unit square to the domains of direct illumination, each with its pdf and
 //! its inverse, side by side in the file of its family (`disk`, `hemisphere`, `sphere`, `cone`,
 //! `phong`, `triangle`, `spherical_triangle`, `spherical_rectangle`, `tent`), the bilinear
-//! warp composed with the spherical polygons (`bilinear`), and triangles sampled by projected
+//! warp composed with the spherical polygons (`bilinear`), and polygons sampled by projected
 //! solid angle for a receiver's normal (`projected`: [`projected_triangle`],
-//! [`projected_rectangle`]; `projected_cap`: [`projected_cap`], the sphere's cap).
+//! [`projected_rectangle`], [`projected_polygon`] of up to eight vertices; `projected_cap`:
+//! [`projected_cap`], the sphere's cap).
 //!
 //! # One function, every width
 //!
@@ -89,8 +90,10 @@ pub(crate) use phong::phong_lobe_density;
 pub use phong::{PHONG_N_MAX, PhongLobe, phong_lobe, phong_lobe_inverse, phong_lobe_pdf};
 pub(crate) use polygon::{dot_wide, plane_dot, wide_cross};
 pub use projected::{
-    PROJECTED_MAX_SPREAD, PROJECTED_MIN_SR, ProjectedRectangle, ProjectedSolidAngleRectangle,
-    ProjectedSolidAngleTriangle, ProjectedTriangle, projected_rectangle,
+    PROJECTED_MAX_SPREAD, PROJECTED_MIN_SR, PROJECTED_POLYGON_MAX_VERTICES, ProjectedPolygon,
+    ProjectedRectangle, ProjectedSolidAngleHexagon, ProjectedSolidAngleRectangle,
+    ProjectedSolidAngleTriangle, ProjectedTriangle, hexagon, projected_polygon,
+    projected_polygon_inverse, projected_polygon_pdf, projected_rectangle,
     projected_rectangle_inverse, projected_rectangle_pdf, projected_triangle,
     projected_triangle_inverse, projected_triangle_pdf,
 };

@@ -91,8 +91,8 @@ struct Edge<L> {
 }
 
 /// The set-up of the projected-solid-angle map of a convex polygon of `N` vertices, clipped to
-/// `K` = 2N slots (vertices repeated where clipping removed some: a repeated vertex makes an
-/// edge of length 0, which sweeps nothing).
+/// 2N slots (vertices repeated where clipping removed some: a repeated vertex makes an edge of
+/// length 0, which sweeps nothing) of the `K` ≥ 2N it holds.
 #[derive(Clone, Copy)]
 struct Projected<L: Math, const N: usize, const K: usize> {
     frame: Frame<V3<L>>,
@@ -100,7 +100,7 @@ struct Projected<L: Math, const N: usize, const K: usize> {
     /// rounding of the result, so that a renderer's own cosine over this pdf gives P.
     normal: V3<L>,
     e: [Edge<L>; K],
-    /// How many of `e` (and `wide`) are edges: K, or N where no lane clipped a vertex.
+    /// How many of `e` (and `wide`) are edges: 2N, or N where no lane clipped a vertex.
     count: usize,
     /// P, the projected area.
     p: L,
@@ -178,6 +178,12 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
     /// either winding) as seen by a receiver with unit normal `n`.
     #[inline(always)]
     fn new(v: [V3<L::Wide>; N], n: V3<L>) -> Self {
+        const {
+            assert!(
+                N >= 3 && K >= 2 * N,
+                "2N slots for a polygon of N ≥ 3 vertices"
+            )
+        };
         let normal = n;
         // The geometry in the f64 lane (see `Wide`), the sampling in f32.
         let g = Wide::new(v, normal);
@@ -198,14 +204,17 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
         let mut central = L::ZERO.le(L::ZERO);
         let heights = g.v.map(|p| dot3_in(p, g.n));
         let slots = clip::<L::Wide, N, K>(g.v, heights);
+        // The slots clipping fills: 2N of the K (K may be larger, a polygon's fixed capacity).
+        let used = 2 * N;
         let mut p = <L::Wide as Lane>::ZERO;
         let mut wide = [WideEdge::default(); K];
         for (((edge, we), a), b) in e
             .iter_mut()
             .zip(wide.iter_mut())
-            .zip(slots)
-            .zip(slots.iter().cycle().skip(1))
+            .zip(slots.iter().take(used))
+            .zip(slots.iter().take(used).cycle().skip(1))
         {
+            let a = *a;
             let t = g.edge(a, *b);
             *we = t;
             p = p + t.area;
@@ -251,7 +260,7 @@ impl<L: Math, const N: usize, const K: usize> Projected<L, N, K> {
             }
             N
         } else {
-            K
+            used
         };
         let wide_p = p;
         let p = L::narrow(p);
@@ -910,7 +919,8 @@ fn vertex<L: Lane, const N: usize>(v: &[V3<L>; N], i: usize) -> V3<L> {
     v.get(i).copied().unwrap_or_default()
 }
 
-/// The convex polygon `w` clipped to the half-space of heights `h` ≥ 0, as K = 2N slots: for
+/// The convex polygon `w` clipped to the half-space of heights `h` ≥ 0, as the first 2N of K
+/// slots (the rest stay zero): for
 /// each edge, where it crosses the boundary (or the previous slot again) and its end (or the
 /// previous slot again), by Sutherland–Hodgman. Two passes, so that the first slots repeat the last point
 /// emitted rather than a point outside. Nothing above the horizon leaves every slot at w₀, a
@@ -1115,6 +1125,145 @@ impl<P: Point3> SolidAngle<P> for SphericalRectangle<P> {
     #[inline(always)]
     fn inverse(&self, w: P) -> P::Vec2 {
         SphericalRectangle::inverse(self, P::from_lanes(self.on_plane(w.to_lanes())))
+    }
+}
+
+/// A convex polygon of N vertices sampled by solid angle: the fan of spherical triangles
+/// (v₀, vᵢ, vᵢ₊₁), one chosen in proportion to its solid angle Ωᵢ (u₀ rescaled within its share,
+/// so that u₀ sweeps the fan from edge v₀v₁ to edge v₀v_{N−1}), then sampled by
+/// [`SphericalTriangle`] with v₀ its apex (by area where that triangle is, below
+/// [`SPHERICAL_TRIANGLE_MIN_SR`](crate::warp::SPHERICAL_TRIANGLE_MIN_SR)). The pdf is
+/// (Ωᵢ/Ω)·pdfᵢ in the first triangle that holds the direction: 1/Ω where the triangles are
+/// sampled spherically, which is the density of solid-angle sampling.
+#[derive(Clone, Copy)]
+struct Fan<P: Point3, const N: usize> {
+    /// The N − 2 triangles of the fan (the rest repeat the first, with no share).
+    tris: [SphericalTriangle<P>; N],
+    /// Ωᵢ, and the sum of those before i.
+    omega: [P::Lane; N],
+    before: [P::Lane; N],
+    /// Ω, their sum.
+    total: P::Lane,
+}
+
+impl<P: Point3<Lane = L>, L: Math, const N: usize> Fan<P, N> {
+    #[inline(always)]
+    fn new(v: [P; N]) -> Self {
+        // Every index is below N (≥ 3, asserted where a fan is built); the fallback is never read.
+        let at = |k: usize| v.get(k).copied().unwrap_or(P::from_lanes(V3::default()));
+        let tris: [SphericalTriangle<P>; N] = core::array::from_fn(|i| {
+            let i = if i + 2 < N { i } else { 0 };
+            // v₀ as Arvo's B, the apex u₁ starts from: u₀ sweeps each triangle from the
+            // diagonal v₀vᵢ₊₁ to v₀vᵢ₊₂, so that it runs on across the fan without a jump.
+            SphericalTriangle::new(at(i + 1), at(0), at(i + 2))
+        });
+        let mut omega = [L::ZERO; N];
+        let mut before = [L::ZERO; N];
+        let mut total = L::ZERO;
+        for ((o, b), t) in omega.iter_mut().zip(&mut before).zip(&tris).take(N - 2) {
+            *o = t.solid_angle();
+            *b = total;
+            total = total + *o;
+        }
+        Self {
+            tris,
+            omega,
+            before,
+            total,
+        }
+    }
+
+    /// The fan's triangles, with their index, Ωᵢ and the Ω before them.
+    #[inline(always)]
+    fn triangles(&self) -> impl Iterator<Item = (L, &SphericalTriangle<P>, L, L)> {
+        self.tris
+            .iter()
+            .zip(self.omega)
+            .zip(self.before)
+            .enumerate()
+            .take(N - 2)
+            .map(|(i, ((t, o), b))| (L::c(i as f64), t, o, b))
+    }
+
+    /// Of the triangles holding w, the first: its index (−1 for none), the pdf there, Ωᵢ, the
+    /// Ω before it and whether it samples by area.
+    #[inline(always)]
+    fn holding(&self, w: P) -> (L, L, L, L, L::Mask) {
+        let (mut k, mut pdf, mut omega, mut before) = (L::c(-1.0), L::ZERO, L::ZERO, L::ZERO);
+        let mut by_area = L::ZERO.gt(L::ZERO);
+        for (i, t, o, b) in self.triangles() {
+            let p = t.pdf(w);
+            let here = p.gt(L::ZERO) & k.lt(L::ZERO);
+            k = L::select(here, i, k);
+            pdf = L::select(here, p, pdf);
+            omega = L::select(here, o, omega);
+            before = L::select(here, b, before);
+            by_area = (here & t.by_area()) | (!here & by_area);
+        }
+        (k, pdf, omega, before, by_area)
+    }
+}
+
+impl<P: Point3<Lane = L>, L: Math, const N: usize> SolidAngle<P> for Fan<P, N> {
+    #[inline(always)]
+    fn sample(&self, u: P::Vec2) -> (P, L) {
+        let u = clamp_u(u.to_lanes());
+        let t = u.x * self.total;
+        // The last triangle with a share that starts at or below t (the first if none does).
+        let (mut k, mut before, mut share) = (L::ZERO, L::ZERO, L::ZERO);
+        for (i, _, o, b) in self.triangles() {
+            let take = (b.le(t) & o.gt(L::ZERO)) | i.eq(L::ZERO);
+            k = L::select(take, i, k);
+            before = L::select(take, b, before);
+            share = L::select(take, o, share);
+        }
+        // u₀ within the triangle's share (NaN stays NaN, and drops the sample there).
+        let x = ((t - before) / share).max(L::ZERO).min(L::ONE);
+        let x = L::select(u.x.is_nan(), u.x, x);
+        let v = P::Vec2::from_lanes(V2::new(x, u.y));
+        let (mut w, mut kept) = (V3::default(), L::ZERO.gt(L::ZERO));
+        for (i, tri, _, _) in self.triangles() {
+            let chosen = k.eq(i);
+            if chosen.any() {
+                let (wi, pi) = tri.sample(v);
+                w = V3::select(chosen, wi.to_lanes(), w);
+                kept = kept | (chosen & pi.gt(L::ZERO));
+            }
+        }
+        // The pdf function's own path, so that the two agree bit for bit; a sample its triangle
+        // dropped stays dropped.
+        let pdf = L::select(kept, self.pdf(P::from_lanes(w)), L::ZERO);
+        let w = V3::select(pdf.gt(L::ZERO), w, V3::new(L::ZERO, L::ZERO, L::ONE));
+        (P::from_lanes(w), pdf)
+    }
+
+    #[inline(always)]
+    fn pdf(&self, w: P) -> L {
+        let (k, p, omega, _, by_area) = self.holding(w);
+        let pdf = L::select(by_area, p * omega / self.total, L::ONE / self.total);
+        L::select(k.ge(L::ZERO), pdf, L::ZERO)
+    }
+
+    #[inline(always)]
+    fn inverse(&self, w: P) -> P::Vec2 {
+        let (k, _, omega, before, _) = self.holding(w);
+        // Outside every triangle, the first one's inverse.
+        let outside = k.lt(L::ZERO);
+        let k = k.max(L::ZERO);
+        let first = self.omega.first().copied().unwrap_or(L::ZERO);
+        let (omega, before) = (
+            L::select(outside, first, omega),
+            L::select(outside, L::ZERO, before),
+        );
+        let mut u = V2::default();
+        for (i, tri, _, _) in self.triangles() {
+            let here = k.eq(i);
+            if here.any() {
+                u = V2::select(here, tri.inverse(w).to_lanes(), u);
+            }
+        }
+        let x = u.x.mul_add(omega, before) / self.total;
+        P::Vec2::from_lanes(V2::new(x.max(L::ZERO).min(L::ONE), u.y))
     }
 }
 
@@ -1524,6 +1673,160 @@ impl Family for ProjectedSolidAngleRectangle {
     fn inverse<L: Math>(&self, x: V3<L>) -> Option<V2<L>> {
         let [c, ex, ey] = self.v.map(lanes3::<L>);
         Some(projected_rectangle_inverse(x, c, ex, ey, lanes3(self.n)))
+    }
+    fn in_domain(&self, x: Vec3) -> bool {
+        is_unit(x)
+    }
+    fn parameter_sensitive(&self, u: glam::Vec2) -> bool {
+        near_a_tip(self.case(), u)
+    }
+}
+
+/// The most vertices of a [`ProjectedPolygon`].
+pub const PROJECTED_POLYGON_MAX_VERTICES: usize = 8;
+
+/// A convex polygon of N vertices (3 ≤ N ≤ [`PROJECTED_POLYGON_MAX_VERTICES`]) sampled by
+/// projected solid angle for a receiver with unit normal `n`: see [`projected_polygon`]. The
+/// set-up (clipping, P, the frame, the fan it falls back to) is paid once.
+///
+/// Its clipped edges fill 2N of sixteen slots whatever N is, so that one type serves every N;
+/// the loops run over the 2N (over N where nothing is clipped).
+#[derive(Clone, Copy)]
+pub struct ProjectedPolygon<P: Point3, const N: usize>(
+    Sampler<P, Fan<P, N>, N, { 2 * PROJECTED_POLYGON_MAX_VERTICES }>,
+);
+
+impl<P: Point3<Lane = L>, L: Math, const N: usize> ProjectedPolygon<P, N> {
+    /// The convex polygon with vertices `v` in order (either winding), relative to the shading
+    /// point, seen by a receiver with unit normal `n`. Its directions are what is sampled: the
+    /// spherical polygon with great-circle edges between consecutive vertices, which is the
+    /// planar polygon's when the vertices are coplanar.
+    #[inline]
+    pub fn new(v: [P; N], n: P) -> Self {
+        const {
+            assert!(
+                N >= 3 && N <= PROJECTED_POLYGON_MAX_VERTICES,
+                "a projected polygon has 3 to 8 vertices"
+            )
+        };
+        Self(Sampler {
+            core: Projected::new(v.map(|x| widen3(x.to_lanes())), n.to_lanes()),
+            base: Fan::new(v),
+        })
+    }
+
+    projected_methods!(
+        projected_polygon,
+        projected_polygon_pdf,
+        projected_polygon_inverse
+    );
+}
+
+/// A direction towards the convex polygon with vertices `v` (relative to the shading point, in
+/// order, either winding; 3 to [`PROJECTED_POLYGON_MAX_VERTICES`] of them), distributed as the
+/// cosine n·ω of a receiver with unit normal `n` over the part of it above the horizon, and its
+/// pdf per steradian n·ω / P: the map of [`projected_triangle`] for N vertices, with the same
+/// cases, accuracy and bad input. Where [`ProjectedPolygon::by_solid_angle`] it samples by solid
+/// angle instead: the fan of spherical triangles (v₀, vᵢ, vᵢ₊₁), one chosen in proportion to its
+/// solid angle, then [`spherical_triangle`](crate::warp::spherical_triangle) in it, with pdf 1/Ω
+/// (Ω the polygon's solid angle; the area pdf in a triangle that one samples by area).
+///
+/// A polygon that is not convex as seen from the shading point is outside the contract: its
+/// samples and pdfs stay finite, but they follow no stated density.
+#[inline]
+pub fn projected_polygon<P: Point2<Lane = L>, L: Math, const N: usize>(
+    u: P,
+    v: [P::Vec3; N],
+    n: P::Vec3,
+) -> (P::Vec3, L) {
+    let v = v.map(Point3::to_lanes);
+    halved!(sample ProjectedPolygon::new(v: lane, n) at u)
+}
+
+/// pdf per steradian that [`projected_polygon`] returns direction `w` (any positive multiple):
+/// n·ω / P inside the polygon and above the horizon, else 0 (also for NaN); the fan's where the
+/// polygon is sampled by solid angle.
+#[inline]
+pub fn projected_polygon_pdf<P: Point3<Lane = L>, L: Math, const N: usize>(
+    w: P,
+    v: [P; N],
+    n: P,
+) -> L {
+    let v = v.map(Point3::to_lanes);
+    halved!(pdf ProjectedPolygon::new(v: lane, n) at w)
+}
+
+/// Inverse of [`projected_polygon`]: the u that maps to direction `w`, clamped to the square.
+/// NaN gives NaN.
+#[inline]
+pub fn projected_polygon_inverse<P: Point3<Lane = L>, L: Math, const N: usize>(
+    w: P,
+    v: [P; N],
+    n: P,
+) -> P::Vec2 {
+    let v = v.map(Point3::to_lanes);
+    halved!(inverse ProjectedPolygon::new(v: lane, n) at w)
+}
+
+/// The hexagon c + cos(kπ/3)·ex + sin(kπ/3)·ey, k = 0 … 5, of the registry's
+/// [`ProjectedSolidAngleHexagon`]: convex for any ex and ey that are not parallel.
+pub fn hexagon([c, ex, ey]: [Vec3; 3]) -> [Vec3; 6] {
+    const H: f32 = 0.866_025_4; // sin(π/3)
+    [
+        c + ex,
+        c + ex * 0.5 + ey * H,
+        c - ex * 0.5 + ey * H,
+        c - ex,
+        c - ex * 0.5 - ey * H,
+        c + ex * 0.5 - ey * H,
+    ]
+}
+
+/// The registry's [`projected_polygon`] towards the [`hexagon`] of `v` = [c, ex, ey] for the
+/// receiver's normal `n`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ProjectedSolidAngleHexagon {
+    /// The centre and the two half-axes.
+    pub v: [Vec3; 3],
+    /// The receiver's unit normal.
+    pub n: Vec3,
+}
+
+impl ProjectedSolidAngleHexagon {
+    /// Which case it is: "central", "large", "small", with " horizon", or "solid" (as the
+    /// projected triangle's).
+    pub fn case(&self) -> &'static str {
+        let v = hexagon(self.v);
+        let t = ProjectedPolygon::new(v, self.n);
+        case(
+            t.by_solid_angle(),
+            t.central(),
+            t.projected_area(),
+            &v,
+            self.n,
+        )
+    }
+}
+
+impl Family for ProjectedSolidAngleHexagon {
+    fn name(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "projected_polygon hexagon {}", self.case())
+    }
+    fn sampler<L: Math>(&self) -> impl Fn(V2<L>) -> (V3<L>, L) + Copy {
+        let (v, n) = (hexagon(self.v).map(lanes3::<L>), lanes3::<L>(self.n));
+        // Through `black_box`, as the spherical triangle's: the set-up is paid at every sample.
+        #[inline(always)]
+        move |u| {
+            let (v, n) = core::hint::black_box((v, n));
+            projected_polygon(u, v, n)
+        }
+    }
+    fn pdf<L: Math>(&self, x: V3<L>) -> L {
+        projected_polygon_pdf(x, hexagon(self.v).map(lanes3::<L>), lanes3(self.n))
+    }
+    fn inverse<L: Math>(&self, x: V3<L>) -> Option<V2<L>> {
+        let v = hexagon(self.v).map(lanes3::<L>);
+        Some(projected_polygon_inverse(x, v, lanes3(self.n)))
     }
     fn in_domain(&self, x: Vec3) -> bool {
         is_unit(x)

@@ -44,6 +44,9 @@ mod warp {
     mod projected;
     // Sphere lights by projected solid angle: P, zero variance, the three cases, lanes.
     mod projected_cap;
+    // Polygons of up to eight vertices: P, zero variance, the fan, hard cases, lanes.
+    #[cfg(not(target_family = "wasm"))]
+    mod projected_polygon;
     #[cfg(not(target_family = "wasm"))]
     mod properties;
     #[cfg(not(target_family = "wasm"))]

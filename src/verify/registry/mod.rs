@@ -415,7 +415,31 @@ impl Sampler {
         samples: usize,
         u: impl Fn(usize) -> Vec2,
     ) -> ChiSquareResult {
-        let sample = |i| self.sample(u(i)).0;
+        // A sample returned with pdf 0 is dropped (the Phong lobe's at u₀ = 0 exactly, a
+        // cosine-weighted one on the rim): it carries no density, and the test bins the others.
+        // Dropping more than one sample in 10⁵ is a defect, reported as invalid samples.
+        let mut kept = Vec::with_capacity(samples);
+        let mut dropped = Vec::new();
+        for i in 0..samples {
+            match self.sample(u(i)) {
+                (x, p) if p > 0.0 => kept.push(x),
+                _ => dropped.push(i),
+            }
+        }
+        let mut result = self.chi_square_kept(judge, &kept);
+        if dropped.len() * 100_000 > samples {
+            result.invalid_samples += dropped.len();
+            result.first_invalid = dropped
+                .first()
+                .map(|&i| (i, std::format!("u = {:?} dropped (pdf 0)", u(i))));
+        }
+        result
+    }
+
+    /// The χ² test of the samples `kept` against `judge`'s pdf in this sampler's domain.
+    fn chi_square_kept(&self, judge: &Sampler, kept: &[Vec3]) -> ChiSquareResult {
+        let samples = kept.len();
+        let sample = |i: usize| kept.get(i).copied().unwrap_or(Vec3::NAN);
         let pdf = |x: Vec3| judge.pdf(x) as f64;
         match self.evidence().facts().test {
             TestDomain::Disk => ChiSquare::disk().samples(samples).run(

@@ -5,7 +5,9 @@ use std::boxed::Box;
 
 use super::{Evidence, Facts, Kind, Param, RoundTrip};
 use crate::verify::PlanarLight;
-use crate::warp::{ProjectedSolidAngleRectangle, ProjectedSolidAngleTriangle};
+use crate::warp::{
+    ProjectedSolidAngleHexagon, ProjectedSolidAngleRectangle, ProjectedSolidAngleTriangle, hexagon,
+};
 
 /// The geometry varies (the normal stays). u₁, the azimuth's share of the area, is a fraction of
 /// a turn in the central case (0 and 1 meet), and undetermined where u₀ = 0 there (every u₁ maps
@@ -37,6 +39,30 @@ impl Evidence for ProjectedSolidAngleRectangle {
             Box::new(move |v| ProjectedSolidAngleRectangle { v, n }.into()),
         );
         Facts::new(Kind::Polygon(RoundTrip::azimuth([2e-5, 2e-5])), v, light)
+    }
+    fn determined(&self, u: Vec2, _: Vec3) -> [bool; 2] {
+        [u.y > 1e-2 && u.y < 0.99, u.x > 1e-2]
+    }
+}
+
+/// As the triangle's, on the hexagon's fan (its geometry: the centre and two half-axes). Sampled
+/// by solid angle, the fan's triangles of 1e-5 sr resolve only the f32 direction grid over each
+/// (6e-8/√Ωᵢ = 2e-5 of it), coarser towards the apex v₀ where u₁ → 0, and a direction within an
+/// ulp of a diagonal may go to the neighbouring triangle's inverse: its round trip is measured
+/// within 2.6e-4, and bounded at 4e-4.
+impl Evidence for ProjectedSolidAngleHexagon {
+    fn facts(&self) -> Facts {
+        let light = PlanarLight::fan(&hexagon(self.v));
+        let n = self.n;
+        let bound = match self.case() {
+            "solid" => [4e-4, 4e-4],
+            _ => [2e-5, 2e-5],
+        };
+        let v = Param::Geometry(
+            self.v,
+            Box::new(move |v| ProjectedSolidAngleHexagon { v, n }.into()),
+        );
+        Facts::new(Kind::Polygon(RoundTrip::azimuth(bound)), v, light)
     }
     fn determined(&self, u: Vec2, _: Vec3) -> [bool; 2] {
         [u.y > 1e-2 && u.y < 0.99, u.x > 1e-2]

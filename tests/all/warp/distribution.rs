@@ -293,6 +293,9 @@ fn every_pdf_integrates_to_one() {
                 v: [c, ex, ey],
                 ..
             }) => Cap::around(&[c, c + ex, c + ey, c + ex + ey]),
+            Sampler::ProjectedHexagon(warp::ProjectedSolidAngleHexagon { v, .. }) => {
+                Cap::around(&warp::hexagon(v))
+            }
             Sampler::ProjectedCap(warp::ProjectedSolidAngleCap { c, r, .. }) => {
                 let s2 = (r as f64 / c.as_dvec3().length()).powi(2);
                 Cap::new(c.as_dvec3(), (1.2 * warp::cone_h_from_sin2(s2)).min(2.0))

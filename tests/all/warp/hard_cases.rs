@@ -127,6 +127,7 @@ fn warp_case(s: Sampler) -> Warp {
             | Sampler::BilinearTriangle(_)
             | Sampler::ProjectedTriangle(_)
             | Sampler::ProjectedRectangle(_)
+            | Sampler::ProjectedHexagon(_)
             | Sampler::ProjectedCap(_)
             | Sampler::SphericalEllipse(_) => Some(Vec3::Z),
             Sampler::SphericalRectangle(r) => Some(r.v[0]),

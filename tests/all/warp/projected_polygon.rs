@@ -1,0 +1,249 @@
+//! Convex polygons of up to eight vertices sampled by projected solid angle (Peters, "BRDF
+//! Importance Sampling for Polygonal Lights", ACM TOG 40(4), 2021), and by solid angle through
+//! their fan of spherical triangles where the projected form cancels.
+//!
+//! Facts checked: P is Lambert's irradiance ½ Σ Θᵢ (n·Γᵢ) of the polygon clipped to the
+//! receiver's horizon; sampling with pdf n·ω / P makes every single-sample estimate of the
+//! irradiance exact; three vertices give the projected triangle bit for bit; a tiny polygon is
+//! sampled uniformly in solid angle, pdf 1/Ω; lane i of eight is the scalar call.
+
+use glam::{DVec3, Vec2, Vec3};
+use mcsample::reference::polygon_irradiance;
+use mcsample::warp::{
+    PROJECTED_MIN_SR, ProjectedPolygon, ProjectedTriangle, projected_polygon, projected_polygon_pdf,
+};
+use mcsample::x8::{Vec2x8, Vec3x8};
+
+use crate::common::TestRng;
+
+fn random_dir(rng: &mut TestRng) -> Vec3 {
+    loop {
+        let v = Vec3::new(rng.u01(), rng.u01(), rng.u01()) * 2.0 - Vec3::ONE;
+        if v.length_squared() < 1.0 && v.length_squared() > 1e-3 {
+            return v.normalize();
+        }
+    }
+}
+
+/// A receiver's normal and a convex N-gon 1 to 5 units away, up to 1 across: N points of an
+/// ellipse at increasing angles, so convex and coplanar up to the rounding of its f32 vertices
+/// (the sampler's polygon is the spherical one through them either way).
+fn configuration<const N: usize>(rng: &mut TestRng) -> (Vec3, [Vec3; N]) {
+    let n = random_dir(rng);
+    let c = random_dir(rng) * (1.0 + 4.0 * rng.u01());
+    let ex = random_dir(rng);
+    let ey = ex.cross(random_dir(rng)).normalize();
+    let (ex, ey) = (ex * (0.05 + 0.5 * rng.u01()), ey * (0.05 + 0.5 * rng.u01()));
+    // Angles spread over the turn, each jittered within its own N-th of it.
+    let phase = rng.u01();
+    let v = core::array::from_fn(|k| {
+        let a = core::f32::consts::TAU * (k as f32 + 0.1 + 0.8 * rng.u01() + phase) / N as f32;
+        c + ex * a.cos() + ey * a.sin()
+    });
+    (n, v)
+}
+
+fn irradiance(n: Vec3, v: &[Vec3]) -> f64 {
+    let v: Vec<[f64; 3]> = v.iter().map(|x| x.as_dvec3().to_array()).collect();
+    polygon_irradiance(n.as_dvec3().to_array(), &v)
+}
+
+/// Random N-gons: P against Lambert's formula, every sample's estimate against P, and the pdf
+/// at the sample against the pdf returned with it, bit for bit.
+fn exact_for<const N: usize>(seed: u64, configurations: usize) {
+    let mut rng = TestRng::new(seed);
+    let (mut worst_p, mut worst_est) = (0.0f64, 0.0f64);
+    let (mut projected, mut straddling, mut decentral) = (0, 0, 0);
+    for _ in 0..configurations {
+        let (n, v) = configuration::<N>(&mut rng);
+        let t = ProjectedPolygon::new(v, n);
+        if t.by_solid_angle() {
+            continue;
+        }
+        projected += 1;
+        straddling += v.iter().any(|x| n.dot(*x) < 0.0) as usize;
+        decentral += !t.central() as usize;
+        let want = irradiance(n, &v);
+        worst_p = worst_p.max((t.projected_area() as f64 - want).abs() / want);
+        for _ in 0..4 {
+            let (w, pdf) = t.sample(rng.u2());
+            assert!(pdf > 0.0, "a sample of {v:?} for {n} dropped");
+            assert_eq!(t.pdf(w).to_bits(), pdf.to_bits(), "{v:?} {n} {w}");
+            let est = n.as_dvec3().normalize().dot(w.as_dvec3()) / pdf as f64;
+            worst_est = worst_est.max((est - want).abs() / want);
+        }
+    }
+    println!(
+        "{N}-gon: {projected} projected ({straddling} across the horizon, {decentral} with the normal outside): P within {worst_p:e}, estimates within {worst_est:e}"
+    );
+    assert!(
+        projected > configurations / 3 && straddling > configurations / 40,
+        "{projected} {straddling}"
+    );
+    assert!(decentral > configurations / 4, "{decentral}");
+    assert!(
+        worst_p < 1e-6,
+        "{N}-gon: P off Lambert's formula by {worst_p:e}"
+    );
+    assert!(
+        worst_est < 1e-5,
+        "{N}-gon: a single-sample estimate off by {worst_est:e}"
+    );
+}
+
+#[test]
+fn every_sample_of_a_lambertian_receiver_estimates_its_irradiance_exactly() {
+    exact_for::<5>(3, 40_000);
+    exact_for::<6>(4, 40_000);
+    exact_for::<8>(5, 40_000);
+}
+
+#[test]
+fn three_vertices_are_the_projected_triangle() {
+    // The same set-up and map for N = 3 with the polygon's sixteen slots as with the
+    // triangle's six: every sampled bit agrees where the projected form samples.
+    let mut rng = TestRng::new(9);
+    let mut compared = 0;
+    for _ in 0..20_000 {
+        let (n, v) = configuration::<3>(&mut rng);
+        let (p, t) = (
+            ProjectedPolygon::new(v, n),
+            ProjectedTriangle::new(v[0], v[1], v[2], n),
+        );
+        assert_eq!(p.projected_area().to_bits(), t.projected_area().to_bits());
+        assert_eq!(p.by_solid_angle(), t.by_solid_angle());
+        if p.by_solid_angle() {
+            continue;
+        }
+        compared += 1;
+        let u = rng.u2();
+        let ((wp, pp), (wt, pt)) = (p.sample(u), t.sample(u));
+        assert_eq!(
+            wp.to_array().map(f32::to_bits),
+            wt.to_array().map(f32::to_bits)
+        );
+        assert_eq!(pp.to_bits(), pt.to_bits());
+        assert_eq!(p.inverse(wp), t.inverse(wt));
+    }
+    assert!(compared > 5000, "{compared}");
+}
+
+/// Ω of the convex polygon `v` in f64: Van Oosterom–Strackee over its fan.
+fn solid_angle(v: &[Vec3]) -> f64 {
+    let v: Vec<DVec3> = v.iter().map(|x| x.as_dvec3().normalize()).collect();
+    (1..v.len() - 1)
+        .map(|i| {
+            let (a, b, c) = (v[0], v[i], v[i + 1]);
+            let num = a.dot(b.cross(c)).abs();
+            let den = 1.0 + a.dot(b) + b.dot(c) + c.dot(a);
+            2.0 * num.atan2(den)
+        })
+        .sum()
+}
+
+#[test]
+fn a_small_polygon_is_uniform_in_solid_angle_through_its_fan() {
+    // P below PROJECTED_MIN_SR: the fan of spherical triangles, each above the spherical
+    // triangle's area threshold, gives pdf 1/Ω everywhere on the polygon.
+    let c = Vec3::new(0.2, -0.1, 1.0);
+    let (ex, ey) = (
+        Vec3::new(0.004, 0.001, 0.0),
+        Vec3::new(-0.001, 0.003, 0.0005),
+    );
+    let v: [Vec3; 7] = core::array::from_fn(|k| {
+        let a = core::f32::consts::TAU * k as f32 / 7.0;
+        c + ex * a.cos() + ey * a.sin()
+    });
+    let n = Vec3::new(0.6, 0.0, 0.8);
+    let t = ProjectedPolygon::new(v, n);
+    assert!(t.by_solid_angle() && t.projected_area() < PROJECTED_MIN_SR);
+    let omega = solid_angle(&v);
+    let mut rng = TestRng::new(2);
+    let mut worst = 0.0f64;
+    for _ in 0..20_000 {
+        let (w, pdf) = t.sample(rng.u2());
+        assert!(pdf > 0.0);
+        assert_eq!(t.pdf(w).to_bits(), pdf.to_bits());
+        worst = worst.max((pdf as f64 * omega - 1.0).abs());
+        // Inside the polygon: on the inner side of each edge's great circle.
+        let w = w.as_dvec3();
+        let inside = (0..7).all(|k| {
+            let (a, b) = (v[k].as_dvec3(), v[(k + 1) % 7].as_dvec3());
+            a.cross(b).dot(w) * a.cross(b).dot(c.as_dvec3()) > 0.0
+        });
+        assert!(inside, "{w} outside");
+    }
+    assert!(worst < 1e-5, "pdf off 1/Ω by {worst:e}");
+    // Off the polygon: 0.
+    assert_eq!(t.pdf(-c.normalize()), 0.0);
+    assert_eq!(t.pdf((c + ex * 2.0).normalize()), 0.0);
+}
+
+#[test]
+fn hard_cases_keep_the_contract() {
+    // An octagon straddling the horizon, its first vertex exactly on it, and one whose first
+    // vertex is the normal's direction: finite samples, the pdf returned equal to the pdf at
+    // the sample, P Lambert's, every estimate exact.
+    let n = Vec3::Z;
+    let ring = |c: Vec3, ex: Vec3, ey: Vec3| -> [Vec3; 8] {
+        core::array::from_fn(|k| {
+            let a = core::f32::consts::TAU * k as f32 / 8.0;
+            c + ex * a.cos() + ey * a.sin()
+        })
+    };
+    let straddling = ring(Vec3::new(0.0, 1.0, 0.0), Vec3::X, Vec3::new(0.0, 0.3, 1.0));
+    assert_eq!(straddling[0].z, 0.0);
+    let on_normal = ring(Vec3::new(-0.5, 0.0, 1.0), Vec3::X * 0.5, Vec3::Y * 0.4);
+    assert_eq!(on_normal[0], Vec3::Z);
+    for (name, v) in [
+        ("straddling, a vertex on the horizon", straddling),
+        ("a vertex on the normal", on_normal),
+    ] {
+        let t = ProjectedPolygon::new(v, n);
+        assert!(!t.by_solid_angle(), "{name}");
+        let want = irradiance(n, &v);
+        let p = t.projected_area() as f64;
+        assert!(
+            (p - want).abs() < 1e-6 * want,
+            "{name}: P {p} against {want}"
+        );
+        let mut rng = TestRng::new(5);
+        for _ in 0..20_000 {
+            let (w, pdf) = t.sample(rng.u2());
+            assert!(w.is_finite() && pdf > 0.0, "{name}: {w} {pdf}");
+            assert_eq!(t.pdf(w).to_bits(), pdf.to_bits(), "{name}: {w}");
+            let est = w.z as f64 / pdf as f64;
+            assert!(
+                (est - want).abs() < 1e-5 * want,
+                "{name}: {est} against {want}"
+            );
+        }
+    }
+}
+
+#[test]
+fn lane_i_of_eight_is_the_scalar_call() {
+    // Eight different hexagons and normals, one per lane, through the free functions.
+    let mut rng = TestRng::new(13);
+    for _ in 0..300 {
+        let configs: [(Vec3, [Vec3; 6]); 8] =
+            core::array::from_fn(|_| configuration::<6>(&mut rng));
+        let us: [Vec2; 8] = core::array::from_fn(|_| rng.u2());
+        let n8 = Vec3x8::from(configs.map(|c| c.0));
+        let v8: [Vec3x8; 6] = core::array::from_fn(|k| Vec3x8::from(configs.map(|c| c.1[k])));
+        let (w8, p8) = projected_polygon(Vec2x8::from(us), v8, n8);
+        let q8 = projected_polygon_pdf(w8, v8, n8);
+        for (i, (n, v)) in configs.iter().enumerate() {
+            let (w, p) = projected_polygon(us[i], *v, *n);
+            assert_eq!(
+                w8.lane(i).to_array().map(f32::to_bits),
+                w.to_array().map(f32::to_bits)
+            );
+            assert_eq!(p8.to_array()[i].to_bits(), p.to_bits());
+            assert_eq!(
+                q8.to_array()[i].to_bits(),
+                projected_polygon_pdf(w, *v, *n).to_bits()
+            );
+        }
+    }
+}

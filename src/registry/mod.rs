@@ -51,8 +51,8 @@ pub use lights::LightSampler;
 /// instances for a receiver's normal ([`TILTED`], and one with a corner below the horizon). The
 /// projected triangle is the large one for the normal inside it (+z), [`TILTED`] (decentral) and
 /// +x (across the horizon), and a small one (0.2) for [`TILTED`]; the projected rectangle the
-/// same with −x across the horizon, and the projected hexagon ([`hexagon_axes`]) as the
-/// triangle and a tiny one (0.01, 6e-5 sr) sampled through its fan by solid angle. The projected caps are a sphere wholly above the horizon,
+/// same with −x across the horizon; the projected hexagon ([`hexagon_axes`]) the large ones, and a
+/// tiny one (0.01, 6e-5 sr) sampled through its fan by solid angle. The projected caps are a sphere wholly above the horizon,
 /// one with its centre above and one with it below the horizon, each across it, and a small
 /// one (0.0035 sr) for [`TILTED`]. The tiny sphere has sin²θmax = 1e-4: smaller ones (down to 1e-12) are
 /// tested in the scene's tests, where the χ² judge is the f64 pdf; here the f32 pdf's slack of
@@ -106,7 +106,6 @@ macro_rules! families {
                 (1.0, Vec3::Z),
                 (1.0, TILTED),
                 (1.0, Vec3::X),
-                (0.2, TILTED),
                 (0.01, TILTED),
             ].map(|(s, n)| warp::ProjectedSolidAngleHexagon { v: hexagon_axes(s), n });
             ProjectedCap: warp::ProjectedSolidAngleCap = [

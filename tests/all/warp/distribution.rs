@@ -353,7 +353,11 @@ fn every_pdf_integrates_to_one() {
 fn registry_chi_square_rejects_a_sampler_with_the_wrong_pdf() {
     // Negative controls through the same domains and binning as `every_warp_passes_chi_square`: each sampler's
     // samples judged by a pdf that is slightly or grossly wrong.
-    let controls: [(Sampler, Sampler); 4] = [
+    let hexagon = |n| warp::ProjectedSolidAngleHexagon {
+        v: mcsample::registry::hexagon_axes(1.0),
+        n,
+    };
+    let controls: [(Sampler, Sampler); 5] = [
         (
             warp::UniformCone { h: 0.3 }.into(),
             warp::UniformCone { h: 0.25 }.into(),
@@ -367,6 +371,12 @@ fn registry_chi_square_rejects_a_sampler_with_the_wrong_pdf() {
             warp::PhongLobe { n: 22.0 }.into(),
         ),
         (warp::PolarDisk.into(), warp::TentPair.into()),
+        // On the fan's square: the cosine of a normal tilted by 37° where the samples follow
+        // the normal's own.
+        (
+            hexagon(mcsample::registry::TILTED).into(),
+            hexagon(Vec3::Z).into(),
+        ),
     ];
     for (k, (s, judge)) in controls.into_iter().enumerate() {
         let r = s.chi_square_against(&judge, 200_000, u_table(99 + k as u64));

@@ -157,8 +157,6 @@ pub const fn rectangle(s: f32) -> [Vec3; 3] {
     ]
 }
 
-/// Generates [`Sampler`] from the list: one variant per family, `From` each family, and the
-/// dispatch of [`Family`]'s items.
 /// The centre and half-axes of the registry's hexagons ([`warp::hexagon`]), scaled by s about
 /// (0, 0, 1) as the triangles are.
 pub const fn hexagon_axes(s: f32) -> [Vec3; 3] {
@@ -169,6 +167,8 @@ pub const fn hexagon_axes(s: f32) -> [Vec3; 3] {
     ]
 }
 
+/// Generates [`Sampler`] from the list: one variant per family, `From` each family, and the
+/// dispatch of [`Family`]'s items.
 macro_rules! define_sampler {
     ($($variant:ident: $family:ty = $instances:expr;)*) => {
         /// One sampler of the registry: a family at its parameters.

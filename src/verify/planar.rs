@@ -121,7 +121,15 @@ impl PlanarLight {
     }
 
     fn normal(&self) -> DVec3 {
-        self.e1.cross(self.e2)
+        // A fan's from all its triangles: its first alone is 0 where v₀, v₁, v₂ are collinear.
+        match self.fan {
+            Some(_) => self
+                .fan_triangles()
+                .iter()
+                .map(|&(_, e1, e2, _, _)| e1.cross(e2))
+                .sum(),
+            None => self.e1.cross(self.e2),
+        }
     }
 
     /// The parameter-square point hit by direction `w`.

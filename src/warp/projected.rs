@@ -994,7 +994,16 @@ impl<L: Math, const N: usize> Wide<L, N> {
     fn new(v: [V3<L::Wide>; N], n: V3<L>) -> Self {
         let n = widen3(n);
         let n = n.scale(<L::Wide as Lane>::ONE / dot3_in(n, n).sqrt());
-        let det = dot3_in(vertex(&v, 0), cross3_in(vertex(&v, 1), vertex(&v, 2)));
+        // The winding from the whole fan, Σ v₀·(vᵢ × vᵢ₊₁): its first triangle alone is 0 for a
+        // polygon whose first three vertices are collinear (a pentagon with a vertex on a side).
+        let v0 = vertex(&v, 0);
+        let det = v
+            .iter()
+            .zip(v.iter().skip(1))
+            .skip(1)
+            .fold(<L::Wide as Lane>::ZERO, |d, (a, b)| {
+                d + dot3_in(v0, cross3_in(*a, *b))
+            });
         Self {
             v,
             n,
@@ -1263,7 +1272,8 @@ impl<P: Point3<Lane = L>, L: Math, const N: usize> SolidAngle<P> for Fan<P, N> {
             }
         }
         let x = u.x.mul_add(omega, before) / self.total;
-        P::Vec2::from_lanes(V2::new(x.max(L::ZERO).min(L::ONE), u.y))
+        // Clamped, NaN kept.
+        P::Vec2::from_lanes(V2::new(x.clamp(L::ZERO, L::ONE), u.y))
     }
 }
 
@@ -1689,8 +1699,8 @@ pub const PROJECTED_POLYGON_MAX_VERTICES: usize = 8;
 /// projected solid angle for a receiver with unit normal `n`: see [`projected_polygon`]. The
 /// set-up (clipping, P, the frame, the fan it falls back to) is paid once.
 ///
-/// Its clipped edges fill 2N of sixteen slots whatever N is, so that one type serves every N;
-/// the loops run over the 2N (over N where nothing is clipped).
+/// Its clipped edges fill 2N of sixteen slots whatever N is (stable Rust cannot write 2N in a
+/// type); the loops run over the 2N (over N where nothing is clipped).
 #[derive(Clone, Copy)]
 pub struct ProjectedPolygon<P: Point3, const N: usize>(
     Sampler<P, Fan<P, N>, N, { 2 * PROJECTED_POLYGON_MAX_VERTICES }>,
@@ -1728,11 +1738,11 @@ impl<P: Point3<Lane = L>, L: Math, const N: usize> ProjectedPolygon<P, N> {
 /// pdf per steradian n·ω / P: the map of [`projected_triangle`] for N vertices, with the same
 /// cases, accuracy and bad input. Where [`ProjectedPolygon::by_solid_angle`] it samples by solid
 /// angle instead: the fan of spherical triangles (v₀, vᵢ, vᵢ₊₁), one chosen in proportion to its
-/// solid angle, then [`spherical_triangle`](crate::warp::spherical_triangle) in it, with pdf 1/Ω
-/// (Ω the polygon's solid angle; the area pdf in a triangle that one samples by area).
+/// solid angle Ωᵢ, then [`spherical_triangle`](crate::warp::spherical_triangle) in it, with pdf
+/// 1/Ω (Ω the polygon's solid angle; (Ωᵢ/Ω)·pdfᵢ in a triangle that samples by area).
 ///
 /// A polygon that is not convex as seen from the shading point is outside the contract: its
-/// samples and pdfs stay finite, but they follow no stated density.
+/// samples follow no stated density.
 #[inline]
 pub fn projected_polygon<P: Point2<Lane = L>, L: Math, const N: usize>(
     u: P,

@@ -415,23 +415,28 @@ impl Sampler {
         samples: usize,
         u: impl Fn(usize) -> Vec2,
     ) -> ChiSquareResult {
-        // A sample returned with pdf 0 is dropped (the Phong lobe's at u₀ = 0 exactly, a
+        // A sample returned with pdf exactly 0 is dropped (the Phong lobe's at u₀ = 0 exactly, a
         // cosine-weighted one on the rim): it carries no density, and the test bins the others.
         // Dropping more than one sample in 10⁵ is a defect, reported as invalid samples.
         let mut kept = Vec::with_capacity(samples);
         let mut dropped = Vec::new();
         for i in 0..samples {
-            match self.sample(u(i)) {
-                (x, p) if p > 0.0 => kept.push(x),
-                _ => dropped.push(i),
+            let (x, p) = self.sample(u(i));
+            if p == 0.0 {
+                dropped.push(i);
+            } else {
+                kept.push(x);
             }
         }
         let mut result = self.chi_square_kept(judge, &kept);
         if dropped.len() * 100_000 > samples {
             result.invalid_samples += dropped.len();
-            result.first_invalid = dropped
-                .first()
-                .map(|&i| (i, std::format!("u = {:?} dropped (pdf 0)", u(i))));
+            result.p_value = 0.0;
+            if result.first_invalid.is_none() {
+                result.first_invalid = dropped
+                    .first()
+                    .map(|&i| (i, std::format!("u = {:?} dropped (pdf 0)", u(i))));
+            }
         }
         result
     }

@@ -54,15 +54,16 @@ impl Evidence for ProjectedSolidAngleHexagon {
     fn facts(&self) -> Facts {
         let light = PlanarLight::fan(&hexagon(self.v));
         let n = self.n;
-        let bound = match self.case() {
-            "solid" => [4e-4, 4e-4],
-            _ => [2e-5, 2e-5],
+        // Through the fan, u₁ is the distance from the apex, not an azimuth: not periodic.
+        let roundtrip = match self.case() {
+            "solid" => RoundTrip::plain([4e-4, 4e-4]),
+            _ => RoundTrip::azimuth([2e-5, 2e-5]),
         };
         let v = Param::Geometry(
             self.v,
             Box::new(move |v| ProjectedSolidAngleHexagon { v, n }.into()),
         );
-        Facts::new(Kind::Polygon(RoundTrip::azimuth(bound)), v, light)
+        Facts::new(Kind::Polygon(roundtrip), v, light)
     }
     fn determined(&self, u: Vec2, _: Vec3) -> [bool; 2] {
         [u.y > 1e-2 && u.y < 0.99, u.x > 1e-2]

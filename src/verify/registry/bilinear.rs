@@ -40,8 +40,7 @@ impl Evidence for CosineRectangle {
         let v = Param::Geometry(self.v, Box::new(move |v| CosineRectangle { v, n }.into()));
         Facts::new(Kind::Polygon(roundtrip), v, light)
     }
-    fn is_corner(&self, x: Vec3) -> bool {
-        let corner = self.v[0].to_array().map(f32::to_bits);
-        x.to_array().map(f32::to_bits) == corner
+    fn dropped_at(&self) -> Vec3 {
+        self.v[0]
     }
 }

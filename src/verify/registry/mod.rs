@@ -206,10 +206,10 @@ pub trait Evidence {
     fn reads(&self) -> Reads {
         Reads::ALL
     }
-    /// True when `x` is the documented point of a dropped sample that may be non-finite (a
-    /// degenerate rectangle's corner).
-    fn is_corner(&self, _x: Vec3) -> bool {
-        false
+    /// Where a polygon's dropped sample points (NaN u, degenerate geometry): +z, or a
+    /// rectangle's corner, which may be non-finite.
+    fn dropped_at(&self) -> Vec3 {
+        Vec3::Z
     }
     /// Which coordinates of u the sample x = sample(u) determines (not at a pole of the
     /// parameterisation).
@@ -293,6 +293,12 @@ impl Sampler {
     /// True for the spherical triangle and rectangle, the warps with geometry.
     pub fn is_polygon(&self) -> bool {
         matches!(self.kind(), Kind::Polygon(_))
+    }
+
+    /// The documented point of a polygon's dropped sample ([`Evidence::dropped_at`]); None
+    /// for the other kinds.
+    pub fn dropped_at(&self) -> Option<Vec3> {
+        self.is_polygon().then(|| self.evidence().dropped_at())
     }
 
     /// True for the lights, sampled from the origin.
@@ -495,7 +501,9 @@ impl Sampler {
         if !polygon && !dropped_light && pdf.to_bits() != s.pdf(x).to_bits() {
             return Err(format!("returned pdf ≠ pdf(x) = {:e}: {}", s.pdf(x), ctx()));
         }
-        let dropped = |pdf: f32| pdf == 0.0 && (x.is_finite() || s.evidence().is_corner(x));
+        let at_corner = x.to_array().map(f32::to_bits)
+            == s.evidence().dropped_at().to_array().map(f32::to_bits);
+        let dropped = |pdf: f32| pdf == 0.0 && (x.is_finite() || at_corner);
         if u.is_nan() || s.nan_param() {
             let ok = match s.nan_policy() {
                 NanPolicy::NanOut => s.is_canonical_nan(x) && pdf == 0.0,

@@ -20,8 +20,7 @@ impl Evidence for SolidAngleRectangle {
         let v = Param::Geometry(self.v, Box::new(|v| SolidAngleRectangle { v }.into()));
         Facts::new(Kind::Polygon(roundtrip), v, light)
     }
-    fn is_corner(&self, x: Vec3) -> bool {
-        let corner = self.v[0].to_array().map(f32::to_bits);
-        x.to_array().map(f32::to_bits) == corner
+    fn dropped_at(&self) -> Vec3 {
+        self.v[0]
     }
 }

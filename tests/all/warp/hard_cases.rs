@@ -122,18 +122,7 @@ fn warp_case(s: Sampler) -> Warp {
         }),
         domain: domain(s),
         nan_coords: s.nan_coords(),
-        fixed: match s {
-            Sampler::SphericalTriangle(_)
-            | Sampler::BilinearTriangle(_)
-            | Sampler::ProjectedTriangle(_)
-            | Sampler::ProjectedRectangle(_)
-            | Sampler::ProjectedHexagon(_)
-            | Sampler::ProjectedCap(_)
-            | Sampler::SphericalEllipse(_) => Some(Vec3::Z),
-            Sampler::SphericalRectangle(r) => Some(r.v[0]),
-            Sampler::BilinearRectangle(r) => Some(r.v[0]),
-            _ => None,
-        },
+        fixed: s.dropped_at(),
     }
 }
 

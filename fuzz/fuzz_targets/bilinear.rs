@@ -11,7 +11,9 @@
 //! - the projected polygons (triangle, parallelogram, and a hexagon about the fuzzed centre with
 //!   the fuzzed half-axes): a kept sample a unit direction whose pdf is the pdf function's bit for
 //!   bit, finite and > 0, its inverse in [0, 1]² (or NaN where it falls back to a spherical
-//!   rectangle beyond the inverse's reach); a dropped one +z with pdf 0;
+//!   rectangle beyond the inverse's reach); a dropped one +z with pdf 0; and the same for an
+//!   arbitrary pentagon (not convex, planar or simple in general), whose density is outside the
+//!   contract but whose bad-input rules are not;
 //! - the projected cap (a sphere about a fuzzed centre, of a fuzzed radius): as the projected
 //!   polygons, except that a sample on the horizon keeps its direction with pdf 0;
 //! - every lane of the x8 and x16 forms equal to the scalar form, bit for bit, with a different
@@ -404,6 +406,44 @@ fuzz_target!(|data: &[u8]| {
         [
             (x8.lane(2), p8.to_array()[2], h8.inverse(x8).lane(2)),
             (x16.lane(14), p16.to_array()[14], h16.inverse(x16).lane(14)),
+        ],
+    );
+
+    // An arbitrary pentagon: in general not convex, not planar, or crossing itself. Its density
+    // is outside the contract, its bad-input rules are not: a unit direction whose pdf is the
+    // pdf function's, or +z dropped, and the same bits in every lane. The other lanes hold it
+    // from other first vertices and in the other winding, for other normals.
+    let pent = [a, b, c, ey, a + c];
+    let turn = |k: usize, back: bool| -> [Vec3; 5] {
+        core::array::from_fn(|i| pent[if back { (5 + k - i) % 5 } else { (i + k) % 5 }])
+    };
+    let lane = |i: usize| match i % 4 {
+        0 | 2 => (pent, n),
+        1 => (turn(i / 4 + 1, false), Vec3::Z),
+        _ => (turn(i / 4, true), -n),
+    };
+    let g = ProjectedPolygon::new(pent, n);
+    let l8: [([Vec3; 5], Vec3); 8] = core::array::from_fn(lane);
+    let l16: [([Vec3; 5], Vec3); 16] = core::array::from_fn(lane);
+    let g8 = ProjectedPolygon::new(
+        core::array::from_fn::<_, 5, _>(|k| Vec3x8::from(l8.map(|q| q.0[k]))),
+        Vec3x8::from(l8.map(|q| q.1)),
+    );
+    let g16 = ProjectedPolygon::new(
+        core::array::from_fn::<_, 5, _>(|k| Vec3x16::from(l16.map(|q| q.0[k]))),
+        Vec3x16::from(l16.map(|q| q.1)),
+    );
+    let (x, pdf) = g.sample(u);
+    let (x8, p8) = g8.sample(Vec2x8::splat(u));
+    let (x16, p16) = g16.sample(Vec2x16::splat(u));
+    check_projected(
+        &format!("projected pentagon {pent:?} n {n:?} u {u:?}"),
+        (x, pdf),
+        g.pdf(x),
+        (g.inverse(x), g.by_solid_angle()),
+        [
+            (x8.lane(2), p8.to_array()[2], g8.inverse(x8).lane(2)),
+            (x16.lane(14), p16.to_array()[14], g16.inverse(x16).lane(14)),
         ],
     );
 

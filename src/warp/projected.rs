@@ -1138,21 +1138,30 @@ impl<P: Point3> SolidAngle<P> for SphericalRectangle<P> {
 }
 
 /// A convex polygon of N vertices sampled by solid angle: the fan of spherical triangles
-/// (v₀, vᵢ, vᵢ₊₁), one chosen in proportion to its solid angle Ωᵢ (u₀ rescaled within its share,
-/// so that u₀ sweeps the fan from edge v₀v₁ to edge v₀v_{N−1}), then sampled by
-/// [`SphericalTriangle`] with v₀ its apex (by area where that triangle is, below
-/// [`SPHERICAL_TRIANGLE_MIN_SR`](crate::warp::SPHERICAL_TRIANGLE_MIN_SR)). The pdf is
-/// (Ωᵢ/Ω)·pdfᵢ in the first triangle that holds the direction: 1/Ω where the triangles are
-/// sampled spherically, which is the density of solid-angle sampling.
+/// (v₀, vᵢ, vᵢ₊₁), one chosen in proportion to its weight (u₀ rescaled within its share, so that
+/// u₀ sweeps the fan from edge v₀v₁ to edge v₀v_{N−1}), then sampled by [`SphericalTriangle`]
+/// with v₀ its apex. The weight is its solid angle Ωᵢ, and the pdf 1/Ω in the first triangle
+/// that holds the direction: the density of solid-angle sampling. Where any triangle of the fan
+/// samples by area (below [`SPHERICAL_TRIANGLE_MIN_SR`](crate::warp::SPHERICAL_TRIANGLE_MIN_SR),
+/// or above the maximum) every one does, weighted by its area Aᵢ, with pdf (Aᵢ/A)·pdfᵢ: for
+/// coplanar vertices, the area density of the whole polygon. Mixing the two would make the
+/// density jump at the diagonals, by the relative size of the triangle's angular extent. (f32
+/// vertices that are not exactly coplanar give each triangle its own plane, and the density
+/// jumps by their tilt, of the order of ε·|v| over the polygon's size.)
 #[derive(Clone, Copy)]
 struct Fan<P: Point3, const N: usize> {
     /// The N − 2 triangles of the fan (the rest repeat the first, with no share).
     tris: [SphericalTriangle<P>; N],
-    /// Ωᵢ, and the sum of those before i.
-    omega: [P::Lane; N],
+    /// The weights (Ωᵢ or Aᵢ), and the sum of those before i.
+    weight: [P::Lane; N],
     before: [P::Lane; N],
-    /// Ω, their sum.
+    /// The weights' sum.
     total: P::Lane,
+    /// Where the fan samples by area.
+    by_area: <P::Lane as Lane>::Mask,
+    /// Where every vertex is finite: elsewhere the polygon is degenerate and has pdf 0, as a
+    /// triangle with such a vertex has, though its other triangles are not.
+    finite: <P::Lane as Lane>::Mask,
 }
 
 impl<P: Point3<Lane = L>, L: Math, const N: usize> Fan<P, N> {
@@ -1160,56 +1169,94 @@ impl<P: Point3<Lane = L>, L: Math, const N: usize> Fan<P, N> {
     fn new(v: [P; N]) -> Self {
         // Every index is below N (≥ 3, asserted where a fan is built); the fallback is never read.
         let at = |k: usize| v.get(k).copied().unwrap_or(P::from_lanes(V3::default()));
+        // v₀ as Arvo's B, the apex u₁ starts from: u₀ sweeps each triangle from the diagonal
+        // v₀vᵢ₊₁ to v₀vᵢ₊₂, so that it runs on across the fan without a jump.
+        let first = SphericalTriangle::new(at(1), at(0), at(2));
         let tris: [SphericalTriangle<P>; N] = core::array::from_fn(|i| {
-            let i = if i + 2 < N { i } else { 0 };
-            // v₀ as Arvo's B, the apex u₁ starts from: u₀ sweeps each triangle from the
-            // diagonal v₀vᵢ₊₁ to v₀vᵢ₊₂, so that it runs on across the fan without a jump.
-            SphericalTriangle::new(at(i + 1), at(0), at(i + 2))
+            if i == 0 || i + 2 >= N {
+                first
+            } else {
+                SphericalTriangle::new(at(i + 1), at(0), at(i + 2))
+            }
         });
-        let mut omega = [L::ZERO; N];
+        let by_area = tris
+            .iter()
+            .take(N - 2)
+            .fold(L::ZERO.gt(L::ZERO), |m, t| m | t.by_area());
+        let tris = tris.map(|t| t.by_area_where(by_area));
+        // Areas in f64, where differences of nearby f32 vertices are exact, as shares of their
+        // sum (an area of coordinates near f32's range overflows f32); none for a triangle with
+        // a vertex that is not finite.
+        let zero = <L::Wide as Lane>::ZERO;
+        let origin = widen3(at(0).to_lanes());
+        let areas: [L::Wide; N] = core::array::from_fn(|i| {
+            if by_area.any() && i + 2 < N {
+                let e1 = widen3(at(i + 1).to_lanes()) - origin;
+                let e2 = widen3(at(i + 2).to_lanes()) - origin;
+                let area = cross3_in(e1, e2).length();
+                <L::Wide as Lane>::select(area.is_finite(), area, zero)
+            } else {
+                zero
+            }
+        });
+        let sum = areas.iter().fold(zero, |s, a| s + *a);
+        let mut weight = [L::ZERO; N];
         let mut before = [L::ZERO; N];
         let mut total = L::ZERO;
-        for ((o, b), t) in omega.iter_mut().zip(&mut before).zip(&tris).take(N - 2) {
-            *o = t.solid_angle();
+        for (((w, b), t), area) in weight
+            .iter_mut()
+            .zip(&mut before)
+            .zip(&tris)
+            .zip(areas)
+            .take(N - 2)
+        {
+            // A degenerate triangle (solid angle 0) has no share either way.
+            let valid = t.solid_angle().gt(L::ZERO);
+            let area = L::select(valid, L::narrow(area / sum), L::ZERO);
+            *w = L::select(by_area, area, t.solid_angle());
             *b = total;
-            total = total + *o;
+            total = total + *w;
         }
+        let finite = v.iter().fold(L::ZERO.le(L::ZERO), |m, x| {
+            let x = x.to_lanes();
+            m & x.x.is_finite() & x.y.is_finite() & x.z.is_finite()
+        });
         Self {
             tris,
-            omega,
+            weight,
             before,
             total,
+            by_area,
+            finite,
         }
     }
 
-    /// The fan's triangles, with their index, Ωᵢ and the Ω before them.
+    /// The fan's triangles, with their index, weight and the weight before them.
     #[inline(always)]
     fn triangles(&self) -> impl Iterator<Item = (L, &SphericalTriangle<P>, L, L)> {
         self.tris
             .iter()
-            .zip(self.omega)
+            .zip(self.weight)
             .zip(self.before)
             .enumerate()
             .take(N - 2)
             .map(|(i, ((t, o), b))| (L::c(i as f64), t, o, b))
     }
 
-    /// Of the triangles holding w, the first: its index (−1 for none), the pdf there, Ωᵢ, the
-    /// Ω before it and whether it samples by area.
+    /// Of the triangles holding w, the first: its index (−1 for none), the pdf there, its
+    /// weight and the weight before it.
     #[inline(always)]
-    fn holding(&self, w: P) -> (L, L, L, L, L::Mask) {
-        let (mut k, mut pdf, mut omega, mut before) = (L::c(-1.0), L::ZERO, L::ZERO, L::ZERO);
-        let mut by_area = L::ZERO.gt(L::ZERO);
+    fn holding(&self, w: P) -> (L, L, L, L) {
+        let (mut k, mut pdf, mut weight, mut before) = (L::c(-1.0), L::ZERO, L::ZERO, L::ZERO);
         for (i, t, o, b) in self.triangles() {
             let p = t.pdf(w);
             let here = p.gt(L::ZERO) & k.lt(L::ZERO);
             k = L::select(here, i, k);
             pdf = L::select(here, p, pdf);
-            omega = L::select(here, o, omega);
+            weight = L::select(here, o, weight);
             before = L::select(here, b, before);
-            by_area = (here & t.by_area()) | (!here & by_area);
         }
-        (k, pdf, omega, before, by_area)
+        (k, pdf, weight, before)
     }
 }
 
@@ -1248,20 +1295,20 @@ impl<P: Point3<Lane = L>, L: Math, const N: usize> SolidAngle<P> for Fan<P, N> {
 
     #[inline(always)]
     fn pdf(&self, w: P) -> L {
-        let (k, p, omega, _, by_area) = self.holding(w);
-        let pdf = L::select(by_area, p * omega / self.total, L::ONE / self.total);
-        L::select(k.ge(L::ZERO), pdf, L::ZERO)
+        let (k, p, weight, _) = self.holding(w);
+        let pdf = L::select(self.by_area, p * weight / self.total, L::ONE / self.total);
+        L::select(k.ge(L::ZERO) & self.finite, pdf, L::ZERO)
     }
 
     #[inline(always)]
     fn inverse(&self, w: P) -> P::Vec2 {
-        let (k, _, omega, before, _) = self.holding(w);
+        let (k, _, weight, before) = self.holding(w);
         // Outside every triangle, the first one's inverse.
         let outside = k.lt(L::ZERO);
         let k = k.max(L::ZERO);
-        let first = self.omega.first().copied().unwrap_or(L::ZERO);
-        let (omega, before) = (
-            L::select(outside, first, omega),
+        let first = self.weight.first().copied().unwrap_or(L::ZERO);
+        let (weight, before) = (
+            L::select(outside, first, weight),
             L::select(outside, L::ZERO, before),
         );
         let mut u = V2::default();
@@ -1271,9 +1318,33 @@ impl<P: Point3<Lane = L>, L: Math, const N: usize> SolidAngle<P> for Fan<P, N> {
                 u = V2::select(here, tri.inverse(w).to_lanes(), u);
             }
         }
-        let x = u.x.mul_add(omega, before) / self.total;
+        let x = u.x.mul_add(weight, before) / self.total;
         // Clamped, NaN kept.
         P::Vec2::from_lanes(V2::new(x.clamp(L::ZERO, L::ONE), u.y))
+    }
+}
+
+/// A fallback built only where some lane takes it: without one, every direction has pdf 0 and
+/// maps to (0, 0), which no caller reads (the projected map serves every lane).
+impl<P: Point3, B: SolidAngle<P>> SolidAngle<P> for Option<B> {
+    #[inline(always)]
+    fn sample(&self, u: P::Vec2) -> (P, P::Lane) {
+        match self {
+            Some(b) => b.sample(u),
+            None => (
+                P::from_lanes(V3::new(P::Lane::ZERO, P::Lane::ZERO, P::Lane::ONE)),
+                P::Lane::ZERO,
+            ),
+        }
+    }
+    #[inline(always)]
+    fn pdf(&self, w: P) -> P::Lane {
+        self.as_ref().map_or(P::Lane::ZERO, |b| b.pdf(w))
+    }
+    #[inline(always)]
+    fn inverse(&self, w: P) -> P::Vec2 {
+        self.as_ref()
+            .map_or(P::Vec2::from_lanes(V2::default()), |b| b.inverse(w))
     }
 }
 
@@ -1697,13 +1768,13 @@ pub const PROJECTED_POLYGON_MAX_VERTICES: usize = 8;
 
 /// A convex polygon of N vertices (3 ≤ N ≤ [`PROJECTED_POLYGON_MAX_VERTICES`]) sampled by
 /// projected solid angle for a receiver with unit normal `n`: see [`projected_polygon`]. The
-/// set-up (clipping, P, the frame, the fan it falls back to) is paid once.
+/// set-up (clipping, P, the frame, and the fan it falls back to where some lane does) is paid once.
 ///
 /// Its clipped edges fill 2N of sixteen slots whatever N is (stable Rust cannot write 2N in a
 /// type); the loops run over the 2N (over N where nothing is clipped).
 #[derive(Clone, Copy)]
 pub struct ProjectedPolygon<P: Point3, const N: usize>(
-    Sampler<P, Fan<P, N>, N, { 2 * PROJECTED_POLYGON_MAX_VERTICES }>,
+    Sampler<P, Option<Fan<P, N>>, N, { 2 * PROJECTED_POLYGON_MAX_VERTICES }>,
 );
 
 impl<P: Point3<Lane = L>, L: Math, const N: usize> ProjectedPolygon<P, N> {
@@ -1719,10 +1790,10 @@ impl<P: Point3<Lane = L>, L: Math, const N: usize> ProjectedPolygon<P, N> {
                 "a projected polygon has 3 to 8 vertices"
             )
         };
-        Self(Sampler {
-            core: Projected::new(v.map(|x| widen3(x.to_lanes())), n.to_lanes()),
-            base: Fan::new(v),
-        })
+        let core = Projected::new(v.map(|x| widen3(x.to_lanes())), n.to_lanes());
+        // Its N − 2 spherical set-ups cost as much as the projected one: only where needed.
+        let base = (!core.valid).any().then(|| Fan::new(v));
+        Self(Sampler { core, base })
     }
 
     projected_methods!(

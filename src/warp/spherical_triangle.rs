@@ -14,7 +14,6 @@ use crate::warp::polygon::{
     EdgePlanes, needs_pow2_scale, pow2_scale, triangle_area_pdf, vos_solid_angle,
 };
 use crate::warp::polygon::{plane_dot, triangle_terms, wide_cross};
-use crate::warp::triangle::{uniform_triangle, uniform_triangle_inverse};
 
 /// Below this solid angle (sr) the triangle is sampled by area.
 ///
@@ -284,6 +283,27 @@ fn barycentrics<L: Math>(w: V3<L>, s: &Setup<L>) -> (V3<L>, L::Mask) {
     (V3::new(L::ONE - b1 - b2, b1, b2), t.gt(L::ZERO))
 }
 
+/// Barycentrics (of A, B, C) of the planar limit of Arvo's map, uniform by area: u₀ places C′ on
+/// the edge from A to C by area (linearly, in a plane), u₁ the point on the segment from B to C′
+/// (at √u₁ of it). It has Arvo's corners, so that the area fallback maps u to nearly the same
+/// direction as the spherical map would (their difference is of the order of Ω), and the
+/// bilinear warp's corner weights and a fan's shared diagonals stay where the spherical map
+/// puts them.
+#[inline(always)]
+fn planar_arvo<L: Math>(u: V2<L>) -> V3<L> {
+    let t = u.y.sqrt();
+    V3::new(t * (L::ONE - u.x), L::ONE - t, t * u.x)
+}
+
+/// The inverse of [`planar_arvo`]: u₀ = b_C / (b_A + b_C), u₁ = (b_A + b_C)², and u₀ = 0 at B
+/// itself, where every u₀ maps.
+#[inline(always)]
+fn planar_arvo_inverse<L: Math>(b: V3<L>) -> V2<L> {
+    let t = b.x + b.z;
+    let u0 = L::select(t.gt(L::ZERO), b.z / t, L::ZERO);
+    V2::new(u0, t * t)
+}
+
 /// Arvo's map alone, with no area fallback and no validity checks: for measuring where spherical
 /// sampling breaks down (the report's stability table). Use [`spherical_triangle`] to sample.
 #[inline]
@@ -360,10 +380,15 @@ impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
     /// [`LightSampling::Area`](crate::scene::LightSampling::Area)).
     #[inline]
     pub fn by_area_only(self) -> Self {
-        let all = L::ZERO.le(L::ZERO);
+        self.by_area_where(L::ZERO.le(L::ZERO))
+    }
+
+    /// The same triangle, sampled by area also where `m` (lane by lane).
+    #[inline]
+    pub(crate) fn by_area_where(self, m: L::Mask) -> Self {
         Self {
             s: Setup {
-                by_area: all,
+                by_area: self.s.by_area | m,
                 ..self.s
             },
             width: PhantomData,
@@ -397,7 +422,7 @@ impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
         let zero = V3::all(L::ZERO);
         let w_sph = if (!s.by_area).any() { arvo(s, u) } else { zero };
         let w_area = if s.by_area.any() {
-            let bary = uniform_triangle(u);
+            let bary = planar_arvo(u);
             let p = s.a.scale(bary.x) + s.b.scale(bary.y) + s.c.scale(bary.z);
             // Normalised at its own scale: a point near a vertex 2⁻⁷⁰ as far as the others has
             // squares below f32's normal range, and its direction came out 4e-5 short of unit.
@@ -445,7 +470,7 @@ impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
         let s = &self.s;
         let w = w.to_lanes();
         let (bary, _) = barycentrics(w, s);
-        let u_area = uniform_triangle_inverse(bary);
+        let u_area = planar_arvo_inverse(bary);
 
         let plane_bw = s.ub.cross(w);
         let plane_ac = s.ua.cross(s.uc);
@@ -485,7 +510,9 @@ impl<P: Point3<Lane = L>, L: Math> SphericalTriangle<P> {
 ///
 /// Arvo's map (1995), uniform in solid angle with pdf 1/Ω, Ω by Van Oosterom–Strackee with the
 /// plane offset in f64. Below [`SPHERICAL_TRIANGLE_MIN_SR`] or above
-/// [`SPHERICAL_TRIANGLE_MAX_SR`] it samples by area instead and returns the exact converted pdf.
+/// [`SPHERICAL_TRIANGLE_MAX_SR`] it samples by area instead, by the planar limit of Arvo's map
+/// (u₀ sweeps from edge BA to edge BC, u₁ from B outwards, as on the sphere), and returns the
+/// exact converted pdf.
 ///
 /// u is clamped to [0, 1]². Degenerate triangles (coincident or collinear vertices, the shading
 /// point closer to the triangle's plane than 1e-6 of its distance to the nearest vertex,

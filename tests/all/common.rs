@@ -516,11 +516,13 @@ pub fn area_pdf_to_solid_angle(w: D3, p0: D3, n: D3, area: f64) -> f64 {
     dist * dist / (cos_l * area)
 }
 
-/// Area sampling of triangle (a, b, c) through the low-distortion map (b₀ on a, b₁ on b, b₂ on
-/// c): the unit direction and the converted pdf d²/(cos·A).
+/// Area sampling of triangle (a, b, c) with Arvo's corners in the plane: the point √u₁ of the
+/// way from b to the point u₀ of the way from a to c (the triangle b, a, that point has u₀ of
+/// the area, and the density along the segment grows with the distance from b). The unit
+/// direction and the converted pdf d²/(cos·A).
 pub fn triangle_by_area(u: D2, a: D3, b: D3, c: D3) -> (D3, f64) {
-    let bary = uniform_triangle(u);
-    let p = add(add(scale(a, bary[0]), scale(b, bary[1])), scale(c, bary[2]));
+    let on_ac = add(a, scale(sub(c, a), u[0]));
+    let p = add(b, scale(sub(on_ac, b), u[1].sqrt()));
     let w = normalize(p);
     let n = cross(sub(b, a), sub(c, a));
     let area = 0.5 * norm(n);

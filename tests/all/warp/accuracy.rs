@@ -667,7 +667,11 @@ fn spherical_triangle_by_area_below_and_above_thresholds() {
                 format!("u={u:?} got {pdf:e} want {want:e}")
             });
         }
-        out.push(m.check(POINT_TOL));
+        // The ring's plane passes 0.02 from the shading point, while its vertices are about 1
+        // away: the rounding of a point on it, ε·|v|, turns the direction by up to 50 times
+        // as much, and the map takes a few roundings.
+        let bound = if omega > tri_max() { 4e-6 } else { POINT_TOL };
+        out.push(m.check(bound));
         out.push(mp.check(PDF_TOL));
     }
     assert_all(out);

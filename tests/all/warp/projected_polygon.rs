@@ -49,6 +49,30 @@ fn irradiance(n: Vec3, v: &[Vec3]) -> f64 {
     polygon_irradiance(n.as_dvec3().to_array(), &v)
 }
 
+/// `v` for the normal `n` takes the projected map, P is Lambert's within 1e-6, and each of
+/// `samples` samples is kept with the pdf function's pdf and estimates P within 1e-5.
+fn assert_exact<const N: usize>(name: &str, v: [Vec3; N], n: Vec3, samples: usize, seed: u64) {
+    let t = ProjectedPolygon::new(v, n);
+    assert!(!t.by_solid_angle(), "{name}: falls back");
+    let want = irradiance(n, &v);
+    let p = t.projected_area() as f64;
+    assert!(
+        (p - want).abs() < 1e-6 * want,
+        "{name}: P {p} against {want}"
+    );
+    let mut rng = TestRng::new(seed);
+    for _ in 0..samples {
+        let (w, pdf) = t.sample(rng.u2());
+        assert!(w.is_finite() && pdf > 0.0, "{name}: {w} {pdf}");
+        assert_eq!(t.pdf(w).to_bits(), pdf.to_bits(), "{name}: {w}");
+        let est = n.as_dvec3().normalize().dot(w.as_dvec3()) / pdf as f64;
+        assert!(
+            (est - want).abs() < 1e-5 * want,
+            "{name}: {est} against {want}"
+        );
+    }
+}
+
 /// Random N-gons, where they take the projected map: P against Lambert's formula, and every
 /// sample's estimate against P.
 fn exact_for<const N: usize>(seed: u64, configurations: usize) {
@@ -179,6 +203,57 @@ fn a_small_polygon_is_uniform_in_solid_angle_through_its_fan() {
 }
 
 #[test]
+fn a_tiny_polygon_is_uniform_by_area_through_its_fan() {
+    // A heptagon of 5e-6 sr whose outer fan triangles are below the spherical triangle's
+    // threshold (1e-6 sr) and inner ones above: every one is sampled by area, chosen by its area, so
+    // the pdf is the area density d²/(A·cos θ_l) of the whole heptagon (PBR 4th ed., §4.2.3).
+    // Triangles sampled by solid angle beside them would give 1/Ω there, 1e-3 away across
+    // this heptagon's tilt. u comes back through the inverse across the fan's diagonals.
+    let c = Vec3::new(0.2, -0.1, 1.0);
+    // In the plane z = 1, where its f32 vertices are exactly coplanar.
+    let (ex, ey) = (
+        Vec3::new(0.0015, 0.0004, 0.0),
+        Vec3::new(-0.0004, 0.0011, 0.0),
+    );
+    let v: [Vec3; 7] = core::array::from_fn(|k| {
+        let a = core::f32::consts::TAU * k as f32 / 7.0;
+        c + ex * a.cos() + ey * a.sin()
+    });
+    let omega = solid_angle(&v);
+    assert!((1e-6..1e-5).contains(&omega), "{omega}");
+    let n = Vec3::new(0.6, 0.0, 0.8);
+    let t = ProjectedPolygon::new(v, n);
+    assert!(t.by_solid_angle());
+    // The plane and area of the heptagon in f64, from its fan.
+    let d: Vec<DVec3> = v.iter().map(|x| x.as_dvec3()).collect();
+    let normal: DVec3 = (1..6).map(|i| (d[i] - d[0]).cross(d[i + 1] - d[0])).sum();
+    let area = normal.length() / 2.0;
+    let normal = normal.normalize();
+    let mut rng = TestRng::new(6);
+    let (mut worst, mut worst_back, mut spread) = (0.0f64, 0.0f32, 0.0f64);
+    for _ in 0..20_000 {
+        let u = rng.u2();
+        let (w, pdf) = t.sample(u);
+        assert!(pdf > 0.0, "{u} dropped");
+        let w = w.as_dvec3();
+        let dist = d[0].dot(normal) / w.dot(normal);
+        let want = dist * dist / (area * w.dot(normal).abs());
+        worst = worst.max((pdf as f64 - want).abs() / want);
+        spread = spread.max((want * omega - 1.0).abs());
+        if u.y > 1e-2 {
+            worst_back = worst_back.max((t.inverse(w.as_vec3()) - u).abs().max_element());
+        }
+    }
+    println!("area pdf within {worst:e} (1/Ω {spread:e} away), u back within {worst_back:e}");
+    assert!(worst < 1e-5, "pdf off the area density by {worst:e}");
+    assert!(
+        spread > 1e-4,
+        "the area density is 1/Ω here ({spread:e}): no control"
+    );
+    assert!(worst_back < 1e-3, "inverse off by {worst_back:e}");
+}
+
+#[test]
 fn hard_cases_keep_the_contract() {
     // An octagon straddling the horizon, its first vertex exactly on it, and one whose first
     // vertex is the normal's direction: finite samples, the pdf returned equal to the pdf at
@@ -194,30 +269,14 @@ fn hard_cases_keep_the_contract() {
     assert_eq!(straddling[0].z, 0.0);
     let on_normal = ring(Vec3::new(-0.5, 0.0, 1.0), Vec3::X * 0.5, Vec3::Y * 0.4);
     assert_eq!(on_normal[0], Vec3::Z);
-    for (name, v) in [
-        ("straddling, a vertex on the horizon", straddling),
-        ("a vertex on the normal", on_normal),
-    ] {
-        let t = ProjectedPolygon::new(v, n);
-        assert!(!t.by_solid_angle(), "{name}");
-        let want = irradiance(n, &v);
-        let p = t.projected_area() as f64;
-        assert!(
-            (p - want).abs() < 1e-6 * want,
-            "{name}: P {p} against {want}"
-        );
-        let mut rng = TestRng::new(5);
-        for _ in 0..20_000 {
-            let (w, pdf) = t.sample(rng.u2());
-            assert!(w.is_finite() && pdf > 0.0, "{name}: {w} {pdf}");
-            assert_eq!(t.pdf(w).to_bits(), pdf.to_bits(), "{name}: {w}");
-            let est = w.z as f64 / pdf as f64;
-            assert!(
-                (est - want).abs() < 1e-5 * want,
-                "{name}: {est} against {want}"
-            );
-        }
-    }
+    assert_exact(
+        "straddling, a vertex on the horizon",
+        straddling,
+        n,
+        20_000,
+        5,
+    );
+    assert_exact("a vertex on the normal", on_normal, n, 20_000, 5);
 }
 
 #[test]
@@ -263,24 +322,135 @@ fn the_winding_comes_from_the_whole_polygon() {
     let mut cw = ccw;
     cw.reverse();
     let n = Vec3::new(0.3, 0.1, 0.9).normalize();
-    let want = irradiance(n, &ccw);
-    for v in [ccw, cw] {
-        let t = ProjectedPolygon::new(v, n);
-        assert!(!t.by_solid_angle(), "{v:?}");
-        let p = t.projected_area() as f64;
-        assert!(
-            (p - want).abs() < 1e-6 * want,
-            "{v:?}: P {p} against {want}"
-        );
-        let mut rng = TestRng::new(8);
-        for _ in 0..10_000 {
-            let (w, pdf) = t.sample(rng.u2());
-            assert!(pdf > 0.0, "{v:?}: dropped");
-            let est = n.as_dvec3().dot(w.as_dvec3()) / pdf as f64;
+    assert_exact("counter-clockwise", ccw, n, 10_000, 8);
+    assert_exact("clockwise", cw, n, 10_000, 8);
+}
+
+/// The rules that hold for any polygon: eight samples each a unit direction whose pdf is the
+/// pdf function's, finite and > 0, with its inverse in [0, 1]², or dropped at +z with pdf 0;
+/// lane i of eight the scalar call. Returns how many were kept, and whether it fell back.
+fn keeps_the_rules<const N: usize>(
+    name: &str,
+    v: [Vec3; N],
+    n: Vec3,
+    us: [Vec2; 8],
+) -> (usize, bool) {
+    let t = ProjectedPolygon::new(v, n);
+    let t8 = ProjectedPolygon::new(v.map(Vec3x8::splat), Vec3x8::splat(n));
+    let (w8, p8) = t8.sample(Vec2x8::from(us));
+    let b8 = t8.inverse(w8);
+    let mut kept = 0;
+    for (i, u) in us.into_iter().enumerate() {
+        let (x, pdf) = t.sample(u);
+        let back = t.inverse(x);
+        let ctx = format!("{name} n {n}: u {u} → {x} pdf {pdf:e} back {back}");
+        assert!(pdf.is_finite() && pdf >= 0.0, "{ctx}");
+        if pdf > 0.0 {
+            kept += 1;
+            assert!((x.as_dvec3().length() - 1.0).abs() < 1e-6, "{ctx}");
+            assert_eq!(pdf.to_bits(), t.pdf(x).to_bits(), "{ctx}");
             assert!(
-                (est - want).abs() < 1e-5 * want,
-                "{v:?}: {est} against {want}"
+                back.cmpge(Vec2::ZERO).all() && back.cmple(Vec2::ONE).all(),
+                "{ctx}"
             );
+        } else {
+            assert_eq!(x, Vec3::Z, "{ctx}");
         }
+        let bits = |v: Vec3| v.to_array().map(f32::to_bits);
+        assert_eq!(bits(w8.lane(i)), bits(x), "{ctx}: lane");
+        assert_eq!(p8.to_array()[i].to_bits(), pdf.to_bits(), "{ctx}: lane");
+        assert_eq!(
+            b8.lane(i).to_array().map(f32::to_bits),
+            back.to_array().map(f32::to_bits),
+            "{ctx}: lane"
+        );
+    }
+    (kept, t.by_solid_angle())
+}
+
+#[test]
+fn a_polygon_that_is_not_convex_keeps_the_bad_input_rules() {
+    // Outside the contract's density, not its rules: a dart (one reflex vertex), a bow tie (its
+    // edges cross), a pentagon folded out of its plane, each for a normal facing it and one
+    // across it, large enough for the projected map and small enough for the fan.
+    let dart = [
+        Vec3::new(-1.0, -1.0, 1.0),
+        Vec3::new(0.0, -0.2, 1.0),
+        Vec3::new(1.0, -1.0, 1.0),
+        Vec3::new(0.0, 1.0, 1.0),
+    ];
+    let bow_tie = [
+        Vec3::new(-1.0, -1.0, 1.0),
+        Vec3::new(1.0, 1.0, 1.0),
+        Vec3::new(1.0, -1.0, 1.0),
+        Vec3::new(-1.0, 1.0, 1.0),
+    ];
+    let folded = [
+        Vec3::new(-1.0, -1.0, 1.0),
+        Vec3::new(1.0, -1.0, 1.0),
+        Vec3::new(1.0, 1.0, 2.5),
+        Vec3::new(0.0, 0.3, 0.4),
+        Vec3::new(-1.0, 1.0, 1.0),
+    ];
+    let scaled = |x: Vec3, s: f32| (x - Vec3::Z) * s + Vec3::Z;
+    let mut rng = TestRng::new(21);
+    let (mut kept, mut fan, mut projected) = (0, 0, 0);
+    for n in [
+        Vec3::new(0.1, 0.2, 1.0).normalize(),
+        Vec3::new(1.0, 0.0, 0.2).normalize(),
+    ] {
+        for s in [1.0, 1e-3] {
+            let mut tally = |(k, f): (usize, bool)| {
+                kept += k;
+                fan += f as usize;
+                projected += !f as usize;
+            };
+            let mut us = || core::array::from_fn(|_| rng.u2());
+            tally(keeps_the_rules("dart", dart.map(|x| scaled(x, s)), n, us()));
+            tally(keeps_the_rules(
+                "bow tie",
+                bow_tie.map(|x| scaled(x, s)),
+                n,
+                us(),
+            ));
+            tally(keeps_the_rules(
+                "folded",
+                folded.map(|x| scaled(x, s)),
+                n,
+                us(),
+            ));
+        }
+    }
+    println!("{kept} of 96 kept; {projected} polygons projected, {fan} through the fan");
+    assert!(
+        kept >= 48 && fan >= 3 && projected >= 3,
+        "{kept} kept, {fan} fan, {projected} projected"
+    );
+}
+
+#[test]
+fn the_fan_keeps_the_rules_at_the_ends_of_f32() {
+    // Two pentagons through the fan by area (the first found by the `bilinear` fuzz target):
+    // one with a vertex of NaN and infinities beside one 10⁻³⁹ from the point, which is
+    // degenerate, as a triangle with such a vertex is (every sample dropped at +z, pdf 0, not
+    // the NaN of its triangle's area); and one 10³⁷ away and 10³¹ across, whose fan areas
+    // (10⁶² and up) overflow f32 but not their shares (every sample kept).
+    let broken = [
+        Vec3::new(6.269303e-39, 0.0, 3.9443045e-31),
+        Vec3::new(785.0469, 0.0, 48.564705),
+        Vec3::new(777.0353, 1.8332037e-12, 0.5),
+        Vec3::new(f32::NEG_INFINITY, f32::NAN, f32::NEG_INFINITY),
+        Vec3::new(777.0353, 1.8332037e-12, 0.5),
+    ];
+    let n = Vec3::splat(0.5);
+    let far: [Vec3; 5] = core::array::from_fn(|k| {
+        let a = core::f32::consts::TAU * k as f32 / 5.0;
+        Vec3::new(1e31 * a.cos(), 2e31 * a.sin(), 3e37)
+    });
+    let mut rng = TestRng::new(4);
+    for _ in 0..50 {
+        let us = core::array::from_fn(|_| rng.u2());
+        assert_eq!(keeps_the_rules("a NaN vertex", broken, n, us), (0, true));
+        assert_eq!(keeps_the_rules("far", far, Vec3::Z, us), (8, true));
     }
 }

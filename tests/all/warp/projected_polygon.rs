@@ -5,8 +5,11 @@
 //! Facts checked: P is Lambert's irradiance ½ Σ Θᵢ (n·Γᵢ) of the polygon clipped to the
 //! receiver's horizon; sampling with pdf n·ω / P makes every single-sample estimate of the
 //! irradiance exact; three vertices give the projected triangle bit for bit where the projected
-//! map samples; the winding comes from the whole polygon; a tiny polygon is
-//! sampled uniformly in solid angle, pdf 1/Ω; lane i of eight is the scalar call.
+//! map samples; the winding comes from the whole polygon; a small polygon is
+//! sampled uniformly in solid angle, pdf 1/Ω, and a tiny one, whose fan has triangles below the
+//! spherical threshold, by area with the whole polygon's area density; lane i of eight is the
+//! scalar call; polygons that are not convex, or have a vertex that is not finite or far out in
+//! f32's range, keep the bad-input rules.
 
 use glam::{DVec3, Vec2, Vec3};
 use mcsample::reference::polygon_irradiance;
@@ -42,6 +45,15 @@ fn configuration<const N: usize>(rng: &mut TestRng) -> (Vec3, [Vec3; N]) {
         c + ex * a.cos() + ey * a.sin()
     });
     (n, v)
+}
+
+/// N points c + ex·cos a + ey·sin a at a = 2πk/N: a regular N-gon's affine image, convex, and
+/// in the plane of ex and ey up to the rounding of its f32 vertices.
+fn ring<const N: usize>(c: Vec3, ex: Vec3, ey: Vec3) -> [Vec3; N] {
+    core::array::from_fn(|k| {
+        let a = core::f32::consts::TAU * k as f32 / N as f32;
+        c + ex * a.cos() + ey * a.sin()
+    })
 }
 
 fn irradiance(n: Vec3, v: &[Vec3]) -> f64 {
@@ -174,10 +186,7 @@ fn a_small_polygon_is_uniform_in_solid_angle_through_its_fan() {
         Vec3::new(0.004, 0.001, 0.0),
         Vec3::new(-0.001, 0.003, 0.0005),
     );
-    let v: [Vec3; 7] = core::array::from_fn(|k| {
-        let a = core::f32::consts::TAU * k as f32 / 7.0;
-        c + ex * a.cos() + ey * a.sin()
-    });
+    let v: [Vec3; 7] = ring(c, ex, ey);
     let n = Vec3::new(0.6, 0.0, 0.8);
     let t = ProjectedPolygon::new(v, n);
     assert!(t.by_solid_angle() && t.projected_area() < PROJECTED_MIN_SR);
@@ -215,10 +224,7 @@ fn a_tiny_polygon_is_uniform_by_area_through_its_fan() {
         Vec3::new(0.0015, 0.0004, 0.0),
         Vec3::new(-0.0004, 0.0011, 0.0),
     );
-    let v: [Vec3; 7] = core::array::from_fn(|k| {
-        let a = core::f32::consts::TAU * k as f32 / 7.0;
-        c + ex * a.cos() + ey * a.sin()
-    });
+    let v: [Vec3; 7] = ring(c, ex, ey);
     let omega = solid_angle(&v);
     assert!((1e-6..1e-5).contains(&omega), "{omega}");
     let n = Vec3::new(0.6, 0.0, 0.8);
@@ -259,15 +265,9 @@ fn hard_cases_keep_the_contract() {
     // vertex is the normal's direction: finite samples, the pdf returned equal to the pdf at
     // the sample, P Lambert's, every estimate exact.
     let n = Vec3::Z;
-    let ring = |c: Vec3, ex: Vec3, ey: Vec3| -> [Vec3; 8] {
-        core::array::from_fn(|k| {
-            let a = core::f32::consts::TAU * k as f32 / 8.0;
-            c + ex * a.cos() + ey * a.sin()
-        })
-    };
-    let straddling = ring(Vec3::new(0.0, 1.0, 0.0), Vec3::X, Vec3::new(0.0, 0.3, 1.0));
+    let straddling: [Vec3; 8] = ring(Vec3::new(0.0, 1.0, 0.0), Vec3::X, Vec3::new(0.0, 0.3, 1.0));
     assert_eq!(straddling[0].z, 0.0);
-    let on_normal = ring(Vec3::new(-0.5, 0.0, 1.0), Vec3::X * 0.5, Vec3::Y * 0.4);
+    let on_normal: [Vec3; 8] = ring(Vec3::new(-0.5, 0.0, 1.0), Vec3::X * 0.5, Vec3::Y * 0.4);
     assert_eq!(on_normal[0], Vec3::Z);
     assert_exact(
         "straddling, a vertex on the horizon",
